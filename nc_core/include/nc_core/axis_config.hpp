@@ -1,0 +1,78 @@
+// Configuration of the NC kernel and of its axes: plain data with defaults.
+//
+// Every field has a default, a unit and a range (written beside it). A configuration is
+// validated once, when an axis is added (Kernel::add_axis) or a JSON document is read
+// (Kernel::from_json): set-up functions, which may allocate and throw nc::ConfigError.
+// Working state lives in the kernel, never here.
+#pragma once
+
+#include <string>
+
+namespace nc {
+
+struct KernelConfig {
+  double cycle_time = 0.001;  // s, NC (SAF) cycle, 50e-6 … 10e-3
+};
+
+enum class AxisKind {
+  kContinuous,  // servo axis: position controller + drive model + encoder
+  kEncoder,     // encoder / virtual axis: set = actual, no controller, no compensation
+};
+
+enum class DriveModel {
+  kIdeal,          // actual velocity = commanded velocity
+  kFirstOrderLag,  // first-order lag (drive_time_constant) plus dead time (drive_dead_time)
+};
+
+struct AxisConfig {
+  std::string name;  // required, unique in a kernel, not empty
+  int id = 0;        // logical axis number (HLI ax_nr); 0 = assigned by the kernel (index + 1)
+  AxisKind kind = AxisKind::kContinuous;
+
+  // Dynamics (seed 000 §2.1). Units mm, s.
+  double max_velocity = 2200.0;   // mm/s, > 0; a start above it is refused (0x4221)
+  double ref_velocity = 2200.0;   // mm/s, > 0; reference (100 % drive output); above: refused
+  double acceleration = 5000.0;   // A+, mm/s², > 0
+  double deceleration = 5000.0;   // A-, mm/s², > 0
+  double jerk = 50000.0;          // J, mm/s³, > 0
+  double emergency_deceleration = 10000.0;  // mm/s², > 0; axis error ramp
+  double emergency_jerk = 100000.0;         // mm/s³, > 0
+
+  // Software limit switches (seed 000 §2.1 notes 4, 5).
+  bool sw_limit_min_enabled = false;
+  bool sw_limit_max_enabled = false;
+  double sw_limit_min = -100000.0;  // mm; < sw_limit_max when both are enabled
+  double sw_limit_max = 100000.0;   // mm
+
+  double modulo_factor = 360.0;  // mm or °, > 0
+  int override_type = 3;         // 1 … 4, seed 000 §2.2
+
+  // Position controller: v_cmd = feed_forward · v_set + kv · (p_set - p_act).
+  double position_kv = 1.0;            // 1/s (mm/s per mm), >= 0
+  double velocity_feed_forward = 1.0;  // 0 … 1 (fraction of the set velocity)
+
+  // Drive model and encoder.
+  DriveModel drive_model = DriveModel::kIdeal;
+  double drive_time_constant = 0.0;  // s, >= 0 (first-order lag; 0 = none)
+  double drive_dead_time = 0.0;      // s, >= 0, at most 1 s (rounded to whole NC cycles)
+  double drive_max_velocity = 0.0;   // mm/s, >= 0; the drive saturates here (0 = no limit)
+  double encoder_increment = 1e-4;   // mm, >= 0; actual position resolution (0 = exact)
+
+  // Following-error (lag) monitoring (A4).
+  bool following_error_enabled = true;
+  double following_error_limit = 5.0;         // mm, > 0
+  double following_error_filter_time = 0.02;  // s, >= 0: error only after this long above
+
+  // Target position window: InTargetPosition once |p_act - target| <= window for the time.
+  bool target_window_enabled = true;
+  double target_window = 2.0;        // mm, > 0
+  double target_window_time = 0.02;  // s, >= 0
+
+  // Position range window: InPositionArea while |p_act - target| <= window.
+  bool position_range_enabled = true;
+  double position_range_window = 5.0;  // mm, > 0
+
+  double standstill_window = 1e-3;  // mm/s, > 0: |v_act| below it counts as not moving
+};
+
+}  // namespace nc

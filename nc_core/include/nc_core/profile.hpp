@@ -1,0 +1,95 @@
+// The planner: time-optimal jerk-limited motion profiles, as pure functions.
+//
+// Kinematic state in, limits in, a Profile out. Nothing here knows of axes, cycles or time since
+// start; the master-axis job (seed 000 §2.1 "runtime table") owns a Profile and samples it.
+// All functions are cycle functions: noexcept, no allocation. Invalid inputs give a Profile with
+// ok() == false and an ErrorCode, never a NaN.
+//
+// Limits are path-relative (seed 000 §2.1, SPEC B2): while |v| grows |a| <= acceleration (A+),
+// while |v| shrinks |a| <= deceleration (A-), always |v| <= velocity (V) and |da/dt| <= jerk (J).
+#pragma once
+
+#include <array>
+#include <cstddef>
+
+#include "plc_interface/error_code.hpp"
+
+namespace nc {
+
+using ErrorCode = plc::ErrorCode;
+
+struct KinematicState {
+  double p = 0.0;
+  double v = 0.0;
+  double a = 0.0;
+};
+
+struct Limits {
+  double velocity = 0.0;      // V  > 0
+  double acceleration = 0.0;  // A+ > 0
+  double deceleration = 0.0;  // A- > 0
+  double jerk = 0.0;          // J  > 0
+};
+
+// One piece of constant jerk: its start time, length and the state at its start.
+struct Segment {
+  double t0 = 0.0;
+  double duration = 0.0;
+  double p = 0.0;
+  double v = 0.0;
+  double a = 0.0;
+  double j = 0.0;
+};
+
+// A fixed-capacity sequence of constant-jerk segments starting at t = 0.
+class Profile {
+ public:
+  static constexpr std::size_t kMaxSegments = 24;
+
+  Profile() = default;
+  static Profile failure(ErrorCode code) noexcept;
+
+  bool ok() const noexcept { return error_ == ErrorCode::kNone; }
+  ErrorCode error() const noexcept { return error_; }
+  double duration() const noexcept { return duration_; }
+
+  // State at time t; t < 0 gives the start state, t >= duration() the final state. Exact at
+  // segment boundaries (each segment stores its start state).
+  KinematicState at(double t) const noexcept;
+  double jerk_at(double t) const noexcept;
+  KinematicState start_state() const noexcept { return start_; }
+  KinematicState final_state() const noexcept { return final_; }
+
+  std::size_t segment_count() const noexcept { return count_; }
+  const Segment& segment(std::size_t i) const noexcept { return segments_[i]; }
+
+  // Builder used by the planners: start at a state, append constant-jerk pieces, then close.
+  void reset(const KinematicState& start) noexcept;
+  bool append(double duration, double jerk) noexcept;  // false when full; zero lengths skipped
+  // Ends the profile; when `exact_end` is given, the final state is set to it (removing the
+  // rounding of the integration) — the planners pass the exact target state.
+  void close(const KinematicState* exact_end = nullptr) noexcept;
+
+ private:
+  std::array<Segment, kMaxSegments> segments_{};
+  std::size_t count_ = 0;
+  double duration_ = 0.0;
+  KinematicState start_{};
+  KinematicState final_{};
+  ErrorCode error_ = ErrorCode::kNone;
+};
+
+// From any state to rest at `target` in the least time. Start states outside the limits are
+// first brought back inside them as fast as the limits allow; targets the axis cannot stop
+// before produce one continuous profile that reverses through v = 0.
+Profile plan_position(const KinematicState& start, double target, const Limits& limits) noexcept;
+
+// From any state to the constant velocity `velocity` (either sign, |velocity| <= V), then hold
+// it. A lower level is reached from above without undershoot. The profile's last segment is the
+// hold (duration 0; at(t) past the end extrapolates at the held velocity).
+Profile plan_velocity(const KinematicState& start, double velocity, const Limits& limits) noexcept;
+
+// The shortest stop from any state with deceleration limit `deceleration` and jerk `jerk`.
+Profile plan_stop(const KinematicState& start, double deceleration, double jerk) noexcept;
+
+}  // namespace nc

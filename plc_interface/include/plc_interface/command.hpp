@@ -1,0 +1,104 @@
+// The command ("axis function") channel between the PLC side and the NC side.
+//
+// A block posts a Command into its axis's mailbox and receives a command number. The NC kernel
+// drains the mailbox in its next cycle and answers every number in the answer table: accepted
+// (the job runs), refused (with an error code), and later the job's outcome (reached, done,
+// aborted, failed). Blocks read only their own number's answer; the kernel never reads block
+// state. Fixed capacity, no allocation: both sides may use it in the cycle.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+namespace plc {
+
+// What a command asks the NC to do. Values are stable: they appear in traces.
+enum class CommandType : uint16_t {
+  kNone = 0,
+  kReset = 1,                  // clear the axis error (MC_Reset)
+  kMoveAbsolute = 2,           // position = target
+  kMoveRelative = 3,           // position = distance
+  kMoveModulo = 4,             // position = modulo target, direction = fb::MC_Direction value
+  kMoveVelocity = 5,           // velocity (> 0), direction = +1 or -1 (or MC_Direction value)
+  kHalt = 6,                   // deceleration, jerk (0 = the running motion's)
+  kStop = 7,                   // deceleration, jerk; locks motion commands until kStopRelease
+  kStopRelease = 8,            // MC_Stop's Execute fell after Done: unlock
+  kNewPos = 9,                 // position = new end position
+  kNewPosAndVelo = 10,         // position = EPos, velocity = VNew, activation_position = APos
+  kMoveSuperImposed = 11,      // position = D, velocity = VK, acceleration = AK+,
+                               // deceleration = AK-, process_velocity = VP, length = L
+  kAbortSuperposition = 12,    // compensation stop
+  kExtSetPointGenEnable = 13,  // position = target for window monitoring, mode = position type
+  kExtSetPointGenDisable = 14,
+  kGearIn = 15,                // ratio, other_axis = master
+  kGearInDyn = 16,             // ratio (initial), acceleration = AccBound, other_axis = master
+  kGearOut = 17,
+  kHome = 18,                  // position = home position, mode = homing mode
+};
+
+// Lifecycle of one command number, as the NC reports it in the answer table.
+enum class CommandState : uint16_t {
+  kFree = 0,      // slot unused / number unknown
+  kPosted = 1,    // in the mailbox, not yet seen by the NC
+  kActive = 2,    // accepted; the job runs (the axis executes this number)
+  kReached = 3,   // the job's goal is reached but it goes on (InVelocity, InGear, Enabled)
+  kDone = 4,      // the job has ended successfully (target reached, stopped, reset done)
+  kAborted = 5,   // a later command took over the axis before this job ended
+  kError = 6,     // refused at acceptance, or failed while running: see error_code
+};
+
+// One axis function with its parameters. Which fields a type uses is listed at CommandType;
+// 0 for acceleration, deceleration or jerk means the axis default.
+struct Command {
+  CommandType type = CommandType::kNone;
+  uint16_t number = 0;  // assigned by CommandMailbox::post
+  double position = 0.0;
+  double velocity = 0.0;
+  double acceleration = 0.0;
+  double deceleration = 0.0;
+  double jerk = 0.0;
+  double activation_position = 0.0;
+  double process_velocity = 0.0;
+  double length = 0.0;
+  double ratio = 1.0;
+  int32_t direction = 0;
+  int32_t mode = 0;         // buffer mode for moves; position type; homing mode
+  int32_t other_axis = -1;  // kernel index of the partner axis (coupling master)
+  int32_t buffer_mode = 0;  // fb::MC_BufferMode value; 0 = aborting
+};
+
+// The NC's answer for one command number.
+struct CommandAnswer {
+  uint16_t number = 0;
+  CommandState state = CommandState::kFree;
+  uint32_t error_code = 0;  // non-zero only with kError
+};
+
+// Per-axis mailbox and answer table. Command numbers run 1 … 65535 and wrap, skipping 0.
+class CommandMailbox {
+ public:
+  static constexpr std::size_t kQueueCapacity = 16;
+  static constexpr std::size_t kAnswerSlots = 64;
+
+  // PLC side. Returns the command's number, or 0 when the queue is full (nothing posted).
+  uint16_t post(Command command) noexcept;
+  // PLC side. The answer for `number`; state kFree when the number is unknown or so old that its
+  // slot was reused.
+  CommandAnswer answer(uint16_t number) const noexcept;
+
+  // NC side. Takes the oldest posted command; false when the queue is empty.
+  bool take(Command& out) noexcept;
+  // NC side. Records the state (and error code) of `number`.
+  void set_answer(uint16_t number, CommandState state, uint32_t error_code = 0) noexcept;
+
+  std::size_t pending() const noexcept { return count_; }
+
+ private:
+  std::array<Command, kQueueCapacity> queue_{};
+  std::array<CommandAnswer, kAnswerSlots> answers_{};
+  std::size_t head_ = 0;
+  std::size_t count_ = 0;
+  uint16_t last_number_ = 0;
+};
+
+}  // namespace plc

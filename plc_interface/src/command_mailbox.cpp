@@ -1,0 +1,36 @@
+#include "plc_interface/command.hpp"
+
+namespace plc {
+
+uint16_t CommandMailbox::post(Command command) noexcept {
+  if (count_ == kQueueCapacity) return 0;
+  last_number_ = static_cast<uint16_t>(last_number_ + 1U);
+  if (last_number_ == 0) last_number_ = 1;  // 0 means "no command"
+  command.number = last_number_;
+  queue_[(head_ + count_) % kQueueCapacity] = command;
+  ++count_;
+  set_answer(command.number, CommandState::kPosted);
+  return command.number;
+}
+
+CommandAnswer CommandMailbox::answer(uint16_t number) const noexcept {
+  const CommandAnswer& slot = answers_[number % kAnswerSlots];
+  if (number == 0 || slot.number != number) return CommandAnswer{number, CommandState::kFree, 0};
+  return slot;
+}
+
+bool CommandMailbox::take(Command& out) noexcept {
+  if (count_ == 0) return false;
+  out = queue_[head_];
+  head_ = (head_ + 1) % kQueueCapacity;
+  --count_;
+  return true;
+}
+
+void CommandMailbox::set_answer(uint16_t number, CommandState state,
+                                uint32_t error_code) noexcept {
+  if (number == 0) return;
+  answers_[number % kAnswerSlots] = CommandAnswer{number, state, error_code};
+}
+
+}  // namespace plc
