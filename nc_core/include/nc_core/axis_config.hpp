@@ -12,6 +12,8 @@ namespace nc {
 
 struct KernelConfig {
   double cycle_time = 0.001;  // s, NC (SAF) cycle, 50e-6 … 10e-3
+
+  bool operator==(const KernelConfig&) const = default;
 };
 
 enum class AxisKind {
@@ -24,17 +26,21 @@ enum class DriveModel {
   kFirstOrderLag,  // first-order lag (drive_time_constant) plus dead time (drive_dead_time)
 };
 
+// A new field also needs its line in visit_fields() (config_fields.hpp): that one line makes it
+// readable from JSON, written to JSON, validated and documented.
 struct AxisConfig {
+  bool operator==(const AxisConfig&) const = default;  // compares every field, present and future
+
   std::string name;  // required, unique in a kernel, not empty
   int id = 0;        // logical axis number (HLI ax_nr); 0 = assigned by the kernel (index + 1)
   AxisKind kind = AxisKind::kContinuous;
 
   // Dynamics (seed 000 §2.1). Units mm, s.
-  double max_velocity = 2200.0;   // mm/s, > 0; a start above it is refused (0x4221)
-  double ref_velocity = 2200.0;   // mm/s, > 0; reference (100 % drive output); above: refused
-  double acceleration = 5000.0;   // A+, mm/s², > 0
-  double deceleration = 5000.0;   // A-, mm/s², > 0
-  double jerk = 50000.0;          // J, mm/s³, > 0
+  double max_velocity = 2200.0;  // mm/s, > 0; a start above it is refused (0x4221)
+  double ref_velocity = 2200.0;  // mm/s, > 0; reference (100 % drive output); above: refused
+  double acceleration = 5000.0;  // A+, mm/s², > 0
+  double deceleration = 5000.0;  // A-, mm/s², > 0
+  double jerk = 50000.0;         // J, mm/s³, > 0
   double emergency_deceleration = 10000.0;  // mm/s², > 0; axis error ramp
   double emergency_jerk = 100000.0;         // mm/s³, > 0
 

@@ -1,0 +1,172 @@
+// Reflection of the configuration structs: one field visitor per struct.
+//
+// visit_fields() lists every field of KernelConfig / AxisConfig exactly once, with its JSON key,
+// unit, meaning and the rule its value must keep. Reading JSON, writing JSON, validation and the
+// field reference in docs/configuration.md are all driven by these two lists, so a field added
+// here is read, written, checked and documented everywhere at once (STYLE.md: one reflection
+// visitor per configuration struct). Pure compile-time data: no allocation, no exceptions.
+#pragma once
+
+#include <climits>
+#include <concepts>
+#include <limits>
+#include <span>
+#include <string_view>
+#include <type_traits>
+
+#include "nc_core/axis_config.hpp"
+
+namespace nc {
+
+// What the visitor learns about a field besides its value.
+struct FieldInfo {
+  std::string_view key;      // JSON key = C++ field name
+  std::string_view unit;     // "" when dimensionless
+  std::string_view meaning;  // one line for the docs
+};
+
+// A floating-point field is always finite; it may also be bounded on either side.
+struct RealRule {
+  double min = -std::numeric_limits<double>::infinity();
+  double max = std::numeric_limits<double>::infinity();
+  bool min_exclusive = false;  // true: value > min; false: value >= min
+  bool max_exclusive = false;  // true: value < max; false: value <= max
+
+  constexpr bool allows(double v) const {
+    // Written so that NaN fails every comparison and is refused.
+    const bool above = min_exclusive ? v > min : v >= min;
+    const bool below = max_exclusive ? v < max : v <= max;
+    return above && below && v - v == 0.0;  // v - v is NaN for ±inf and NaN
+  }
+};
+
+inline constexpr RealRule kAnyFinite{};
+inline constexpr RealRule kPositive{0.0, std::numeric_limits<double>::infinity(), true, false};
+inline constexpr RealRule kNonNegative{0.0, std::numeric_limits<double>::infinity(), false, false};
+constexpr RealRule closed_range(double lo, double hi) {
+  return RealRule{lo, hi, false, false};
+}
+
+struct IntRule {
+  int min = INT_MIN;
+  int max = INT_MAX;
+  constexpr bool allows(long long v) const { return v >= min && v <= max; }
+};
+
+struct TextRule {
+  bool non_empty = false;
+};
+
+struct FlagRule {};
+
+template <class E>
+struct EnumName {
+  E value;
+  std::string_view name;  // spelling in JSON
+};
+
+template <class E>
+struct EnumRule {
+  std::span<const EnumName<E>> names;
+
+  constexpr const std::string_view* find_name(E v) const {
+    for (const auto& n : names) {
+      if (n.value == v) return &n.name;
+    }
+    return nullptr;
+  }
+};
+
+inline constexpr EnumName<AxisKind> kAxisKindNames[] = {
+    {AxisKind::kContinuous, "continuous"},
+    {AxisKind::kEncoder, "encoder"},
+};
+inline constexpr EnumName<DriveModel> kDriveModelNames[] = {
+    {DriveModel::kIdeal, "ideal"},
+    {DriveModel::kFirstOrderLag, "first_order_lag"},
+};
+
+// The visitor is called as visitor(const FieldInfo&, Field& value, const Rule& rule) once per
+// field, in declaration order. Config may be const (writing, validating) or not (reading).
+template <class Config, class Visitor>
+requires std::same_as<std::remove_const_t<Config>, KernelConfig>
+void visit_fields(Config& c, Visitor&& v) {
+  // A cycle below 50 µs is beyond a PC-based NC; above 10 ms the controller is too slow to be
+  // useful (TwinCAT's SAF task default is 2 ms).
+  v(FieldInfo{"cycle_time", "s", "NC (SAF) cycle time"}, c.cycle_time, closed_range(50e-6, 10e-3));
+}
+
+template <class Config, class Visitor>
+requires std::same_as<std::remove_const_t<Config>, AxisConfig>
+void visit_fields(Config& c, Visitor&& v) {
+  v(FieldInfo{"name", "", "axis name, unique in a kernel; required"}, c.name, TextRule{true});
+  v(FieldInfo{"id", "", "logical axis number (HLI ax_nr); 0 = assigned by the kernel"}, c.id,
+    IntRule{0, INT_MAX});
+  v(FieldInfo{"kind", "", "continuous (servo) or encoder (set = actual)"}, c.kind,
+    EnumRule<AxisKind>{kAxisKindNames});
+
+  v(FieldInfo{"max_velocity", "mm/s", "maximum velocity; a faster start is refused"},
+    c.max_velocity, kPositive);
+  v(FieldInfo{"ref_velocity", "mm/s", "reference velocity (100 % drive output)"}, c.ref_velocity,
+    kPositive);
+  v(FieldInfo{"acceleration", "mm/s²", "default A+ (seed 000 §2.1)"}, c.acceleration, kPositive);
+  v(FieldInfo{"deceleration", "mm/s²", "default A- (seed 000 §2.1)"}, c.deceleration, kPositive);
+  v(FieldInfo{"jerk", "mm/s³", "default J (seed 000 §2.1)"}, c.jerk, kPositive);
+  v(FieldInfo{"emergency_deceleration", "mm/s²", "deceleration of the stop on an axis error"},
+    c.emergency_deceleration, kPositive);
+  v(FieldInfo{"emergency_jerk", "mm/s³", "jerk of the stop on an axis error"}, c.emergency_jerk,
+    kPositive);
+
+  v(FieldInfo{"sw_limit_min_enabled", "", "monitor the minimum software limit"},
+    c.sw_limit_min_enabled, FlagRule{});
+  v(FieldInfo{"sw_limit_max_enabled", "", "monitor the maximum software limit"},
+    c.sw_limit_max_enabled, FlagRule{});
+  v(FieldInfo{"sw_limit_min", "mm", "minimum software limit; < sw_limit_max when both enabled"},
+    c.sw_limit_min, kAnyFinite);
+  v(FieldInfo{"sw_limit_max", "mm", "maximum software limit"}, c.sw_limit_max, kAnyFinite);
+
+  v(FieldInfo{"modulo_factor", "mm", "period of modulo positioning (360 for a rotary axis)"},
+    c.modulo_factor, kPositive);
+  v(FieldInfo{"override_type", "", "override type of seed 000 §2.2"}, c.override_type,
+    IntRule{1, 4});
+
+  v(FieldInfo{"position_kv", "1/s", "position controller gain Kv"}, c.position_kv, kNonNegative);
+  v(FieldInfo{"velocity_feed_forward", "", "fraction of the set velocity fed forward"},
+    c.velocity_feed_forward, closed_range(0.0, 1.0));
+
+  v(FieldInfo{"drive_model", "", "ideal or first_order_lag (with time constant and dead time)"},
+    c.drive_model, EnumRule<DriveModel>{kDriveModelNames});
+  v(FieldInfo{"drive_time_constant", "s", "first-order lag of the drive; 0 = none"},
+    c.drive_time_constant, kNonNegative);
+  v(FieldInfo{"drive_dead_time", "s", "drive dead time, rounded to whole NC cycles"},
+    c.drive_dead_time, closed_range(0.0, 1.0));
+  v(FieldInfo{"drive_max_velocity", "mm/s", "drive saturation velocity; 0 = no limit"},
+    c.drive_max_velocity, kNonNegative);
+  v(FieldInfo{"encoder_increment", "mm", "actual-position resolution; 0 = exact"},
+    c.encoder_increment, kNonNegative);
+
+  v(FieldInfo{"following_error_enabled", "", "monitor the following error (lag)"},
+    c.following_error_enabled, FlagRule{});
+  v(FieldInfo{"following_error_limit", "mm", "largest allowed following error"},
+    c.following_error_limit, kPositive);
+  v(FieldInfo{"following_error_filter_time", "s",
+              "error only after the limit is exceeded this long"},
+    c.following_error_filter_time, kNonNegative);
+
+  v(FieldInfo{"target_window_enabled", "", "monitor the target window (InTargetPosition)"},
+    c.target_window_enabled, FlagRule{});
+  v(FieldInfo{"target_window", "mm", "|actual - target| at most this for InTargetPosition"},
+    c.target_window, kPositive);
+  v(FieldInfo{"target_window_time", "s", "time inside the target window before InTargetPosition"},
+    c.target_window_time, kNonNegative);
+
+  v(FieldInfo{"position_range_enabled", "", "monitor the position range (InPositionArea)"},
+    c.position_range_enabled, FlagRule{});
+  v(FieldInfo{"position_range_window", "mm", "|actual - target| at most this for InPositionArea"},
+    c.position_range_window, kPositive);
+
+  v(FieldInfo{"standstill_window", "mm/s", "|actual velocity| below this counts as not moving"},
+    c.standstill_window, kPositive);
+}
+
+}  // namespace nc
