@@ -1,0 +1,92 @@
+// The PLCopen output rules of an Execute-type block, written once for every such block.
+//
+// A block with an Execute input owns an ExecuteBlock and calls it once per block call with its
+// Execute input and a function that builds the command from the inputs. The ExecuteBlock does
+// the rest, as Tc2_MC2's "general rules for MC function blocks" describe them:
+//  - the command is built (inputs latched) and posted only on a rising edge of Execute, and only
+//    when the block is not busy: a rising edge while Busy starts nothing;
+//  - a falling Execute never aborts the command;
+//  - Busy, Done, Error and CommandAborted are mutually exclusive, and so are Active, Done, Error
+//    and CommandAborted; Active only while the axis executes this block's command number;
+//  - a result (Done, Error, CommandAborted) stays while Execute stays high; a result reached
+//    after Execute fell is shown for exactly one call; then the outputs reset.
+// Cycle functions only: no allocation, no exceptions, no I/O.
+#pragma once
+
+#include <cstdint>
+
+#include "plc_interface/axis_ref.hpp"
+#include "plc_interface/command.hpp"
+#include "plc_interface/error_code.hpp"
+
+namespace fb::detail {
+
+// What a block's start function returns on a rising edge: the command to post, or an error the
+// block found itself (then nothing is posted and the block shows Error with that code).
+struct Start {
+  plc::Command command{};
+  plc::ErrorCode error = plc::ErrorCode::kNone;
+};
+
+inline Start refuse(plc::ErrorCode code) noexcept {
+  return Start{plc::Command{}, code};
+}
+
+// The outputs every Execute-type block takes its own from.
+struct ExecuteOutputs {
+  bool busy = false;
+  bool active = false;   // busy, and NcToPlc.CmdNo is this block's command
+  bool reached = false;  // busy, and the NC answers kReached (InVelocity, InGear, …)
+  bool done = false;
+  bool aborted = false;
+  bool error = false;
+  uint32_t error_id = 0;  // non-zero only with error
+};
+
+class ExecuteBlock {
+ public:
+  // Runs the rules once. `make_start` is called (at most once) only when a command starts.
+  template <class MakeStart>
+  ExecuteOutputs operator()(bool execute, plc::AXIS_REF& axis, MakeStart&& make_start) noexcept {
+    if (begin_call(execute)) start(axis, make_start());
+    return end_call(axis);
+  }
+
+  // Number of the command this block posted last (0: none yet).
+  uint16_t command_number() const noexcept { return number_; }
+
+ private:
+  enum class Phase : uint8_t { kIdle, kBusy, kResult };
+  enum class Outcome : uint8_t { kDone, kAborted, kError };
+
+  // Edge detection and the reset of a result already shown; true when a command is to start.
+  bool begin_call(bool execute) noexcept;
+  void start(plc::AXIS_REF& axis, const Start& start) noexcept;
+  // Follows the NC's answer and forms the outputs.
+  ExecuteOutputs end_call(const plc::AXIS_REF& axis) noexcept;
+  void finish(Outcome outcome, uint32_t error_id) noexcept;
+
+  Phase phase_ = Phase::kIdle;
+  Outcome outcome_ = Outcome::kDone;
+  bool previous_execute_ = false;
+  uint16_t number_ = 0;
+  uint32_t error_id_ = 0;
+};
+
+// The command of a move-type block (positions, dynamics, buffer mode); 0 dynamics = axis default.
+struct MotionInputs {
+  double position = 0.0;
+  double velocity = 0.0;
+  double acceleration = 0.0;
+  double deceleration = 0.0;
+  double jerk = 0.0;
+  int32_t direction = 0;
+  int32_t buffer_mode = 0;
+};
+
+// Builds the Start of a move command: only MC_Aborting is supported (every other buffer mode is
+// refused locally with kBufferModeNotSupported, nothing posted). Motion parameters are passed
+// as they are: the NC validates them and answers with its own code.
+Start motion_start(plc::CommandType type, const MotionInputs& inputs) noexcept;
+
+}  // namespace fb::detail

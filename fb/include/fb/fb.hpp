@@ -1,0 +1,18 @@
+// Umbrella header of the PLC side: the PLCopen / Tc2_MC2 motion function blocks.
+//
+// Each block is a class whose inputs and outputs are public members with the Tc2_MC2 names;
+// calling it with its axis runs it once (a cycle function: no allocation, no exceptions).
+// docs/blocks.md lists every block's inputs, outputs and errors.
+#pragma once
+
+#include "fb/mc_halt.hpp"
+#include "fb/mc_move_absolute.hpp"
+#include "fb/mc_move_relative.hpp"
+#include "fb/mc_move_velocity.hpp"
+#include "fb/mc_power.hpp"
+#include "fb/mc_read_actual_position.hpp"
+#include "fb/mc_read_axis_error.hpp"
+#include "fb/mc_read_status.hpp"
+#include "fb/mc_reset.hpp"
+#include "fb/mc_stop.hpp"
+#include "fb/types.hpp"

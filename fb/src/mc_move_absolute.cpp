@@ -1,0 +1,22 @@
+#include "fb/mc_move_absolute.hpp"
+
+namespace fb {
+
+void MC_MoveAbsolute::operator()(plc::AXIS_REF& axis) noexcept {
+  const detail::ExecuteOutputs out = block_(Execute, axis, [this]() noexcept {
+    return detail::motion_start(plc::CommandType::kMoveAbsolute, {.position = Position,
+                                                                  .velocity = Velocity,
+                                                                  .acceleration = Acceleration,
+                                                                  .deceleration = Deceleration,
+                                                                  .jerk = Jerk,
+                                                                  .buffer_mode = BufferMode});
+  });
+  Done = out.done;
+  Busy = out.busy;
+  Active = out.active;
+  CommandAborted = out.aborted;
+  Error = out.error;
+  ErrorID = out.error_id;
+}
+
+}  // namespace fb

@@ -1,0 +1,29 @@
+#include "fb/mc_power.hpp"
+
+#include <cmath>
+
+#include "plc_interface/error_code.hpp"
+
+namespace fb {
+
+void MC_Power::operator()(plc::AXIS_REF& axis) noexcept {
+  uint32_t control = axis.PlcToNc.ControlDWord;
+  control = plc::with_bit(control, plc::kControlEnable, Enable);
+  control = plc::with_bit(control, plc::kControlFeedEnablePlus, Enable && Enable_Positive);
+  control = plc::with_bit(control, plc::kControlFeedEnableMinus, Enable && Enable_Negative);
+  axis.PlcToNc.ControlDWord = control;
+
+  // Written as a comparison that NaN fails.
+  const bool override_valid = Override >= 0.0 && Override <= 100.0;
+  if (override_valid) {
+    axis.PlcToNc.Override = static_cast<uint32_t>(std::lround(Override * 10'000.0));
+  }
+
+  Status = plc::test_bit(axis.NcToPlc.StateDWord, plc::kStateOperational);
+  Error = !override_valid;
+  ErrorID = override_valid ? 0 : plc::to_id(plc::ErrorCode::kOverrideNotAllowed);
+  Busy = Enable;
+  Active = Enable && !Error;
+}
+
+}  // namespace fb
