@@ -1,0 +1,206 @@
+// Step a of the NC cycle for one axis: drain the mailbox, validate each command, act, answer
+// (contract in plc_interface/command.hpp and the team brief). A refused command changes nothing:
+// every check runs before anything is written, and a start is planned into a scratch profile.
+#include <cmath>
+
+#include "axis/servo_axis.hpp"
+
+namespace nc::detail {
+
+namespace {
+
+using plc::CommandState;
+using plc::CommandType;
+
+bool finite(double x) noexcept {
+  return std::isfinite(x);
+}
+
+// Velocity-move direction: +1 or MC_Positive_Direction (1) forward; -1 or
+// MC_Negative_Direction (3) backward (plc::Command documents both encodings). 0 = invalid.
+double velocity_direction(int32_t direction) noexcept {
+  if (direction == 1) return 1.0;
+  if (direction == -1 || direction == 3) return -1.0;
+  return 0.0;
+}
+
+}  // namespace
+
+void ServoAxis::handle_commands() noexcept {
+  plc::Command command;
+  while (ref_.Mailbox.take(command))
+    handle(command);
+}
+
+void ServoAxis::handle(const plc::Command& command) noexcept {
+  ErrorCode code = ErrorCode::kNone;
+  switch (command.type) {
+    case CommandType::kMoveAbsolute:
+    case CommandType::kMoveRelative:
+      code = start_position(command);
+      break;
+    case CommandType::kMoveVelocity:
+      code = start_velocity(command);
+      break;
+    case CommandType::kHalt:
+    case CommandType::kStop:
+      code = start_halt_or_stop(command);
+      break;
+    case CommandType::kReset:
+      // Answered at once and without taking CmdNo: a reset is not a job.
+      reset_error();
+      ref_.Mailbox.set_answer(command.number, CommandState::kDone);
+      return;
+    case CommandType::kStopRelease:
+      locked_ = false;
+      ref_.Mailbox.set_answer(command.number, CommandState::kDone);
+      return;
+    default:
+      // Modulo starts, online changes, compensation, coupling, external setpoints and homing
+      // come with later issues; until then the kernel refuses them by name.
+      code = ErrorCode::kUnknownCommand;
+      break;
+  }
+  if (code != ErrorCode::kNone) {
+    ref_.Mailbox.set_answer(command.number, CommandState::kError, plc::to_id(code));
+  }
+}
+
+ErrorCode ServoAxis::check_dynamics(const plc::Command& command, Limits& limits) const noexcept {
+  if (!finite(command.velocity) || !finite(command.acceleration) || !finite(command.deceleration) ||
+      !finite(command.jerk)) {
+    return ErrorCode::kParameterNotFinite;
+  }
+  // Table 2 of seed 000 §2.1: V > 0, V <= Vmax, and not above the reference velocity.
+  if (command.velocity <= 0.0) return ErrorCode::kVelocityNotPositive;
+  if (command.velocity > config_.max_velocity || command.velocity > config_.ref_velocity) {
+    return ErrorCode::kVelocityNotAllowed;
+  }
+  if (command.acceleration < 0.0) return ErrorCode::kAccelerationNotAllowed;
+  if (command.deceleration < 0.0) return ErrorCode::kDecelerationNotAllowed;
+  if (command.jerk < 0.0) return ErrorCode::kJerkNotAllowed;
+  limits.velocity = command.velocity;
+  limits.acceleration = command.acceleration > 0.0 ? command.acceleration : config_.acceleration;
+  limits.deceleration = command.deceleration > 0.0 ? command.deceleration : config_.deceleration;
+  limits.jerk = command.jerk > 0.0 ? command.jerk : config_.jerk;
+  return ErrorCode::kNone;
+}
+
+ErrorCode ServoAxis::start_position(const plc::Command& command) noexcept {
+  if (error_ != ErrorCode::kNone) return ErrorCode::kAxisInErrorState;
+  if (locked_) return ErrorCode::kMotionCommandsLocked;
+  if (command.buffer_mode != 0) return ErrorCode::kBufferModeNotSupported;
+  if (!finite(command.position)) return ErrorCode::kPositionNotFinite;
+  Limits limits;
+  if (const ErrorCode code = check_dynamics(command, limits); code != ErrorCode::kNone) {
+    return code;
+  }
+  const double target =
+      command.type == CommandType::kMoveAbsolute ? command.position : set_.p + command.position;
+  if (!finite(target)) return ErrorCode::kPositionNotFinite;
+  // Seed 000 §2.1 notes 4 and 5: the target must lie inside the software limits; where the axis
+  // starts from does not matter, so a start from outside back into the range is allowed.
+  if (monitors_.below_min(target) || monitors_.above_max(target)) {
+    return ErrorCode::kTargetPositionNotAllowed;
+  }
+  const double distance = target - set_.p;
+  if (!controller_enabled() || !feed_enabled(distance)) {
+    return ErrorCode::kNoControllerOrFeedEnable;
+  }
+  const bool at_rest = set_.v == 0.0 && set_.a == 0.0;
+  if (at_rest && (distance == 0.0 || std::abs(distance) < config_.encoder_increment)) {
+    // Seed 000 §2.1: no start for a path shorter than one encoder increment — a warning.
+    warning_ = plc::to_id(ErrorCode::kMovementSmallerThanIncrement);
+    ref_.Mailbox.set_answer(command.number, CommandState::kDone);
+    return ErrorCode::kNone;
+  }
+  scratch_ = plan_position(set_, target, limits);
+  if (!scratch_.ok()) return scratch_.error();
+  accept(JobKind::kPosition, command.number, scratch_, target,
+         distance >= 0.0 ? limits.velocity : -limits.velocity, limits);
+  return ErrorCode::kNone;
+}
+
+ErrorCode ServoAxis::start_velocity(const plc::Command& command) noexcept {
+  if (error_ != ErrorCode::kNone) return ErrorCode::kAxisInErrorState;
+  if (locked_) return ErrorCode::kMotionCommandsLocked;
+  if (command.buffer_mode != 0) return ErrorCode::kBufferModeNotSupported;
+  Limits limits;
+  if (const ErrorCode code = check_dynamics(command, limits); code != ErrorCode::kNone) {
+    return code;
+  }
+  const double direction = velocity_direction(command.direction);
+  if (direction == 0.0) return ErrorCode::kDirectionInvalid;
+  // Continuous motion has no target: refuse it only when it would run further out from (or
+  // straight through) an enabled software limit it already stands on or beyond.
+  if (direction > 0.0 && config_.sw_limit_max_enabled && set_.p >= config_.sw_limit_max) {
+    return ErrorCode::kSoftLimitMaxAtStart;
+  }
+  if (direction < 0.0 && config_.sw_limit_min_enabled && set_.p <= config_.sw_limit_min) {
+    return ErrorCode::kSoftLimitMinAtStart;
+  }
+  if (!controller_enabled() || !feed_enabled(direction)) {
+    return ErrorCode::kNoControllerOrFeedEnable;
+  }
+  const double velocity = direction * limits.velocity;
+  scratch_ = plan_velocity(set_, velocity, limits);
+  if (!scratch_.ok()) return scratch_.error();
+  accept(JobKind::kVelocity, command.number, scratch_, target_, velocity, limits);
+  return ErrorCode::kNone;
+}
+
+ErrorCode ServoAxis::start_halt_or_stop(const plc::Command& command) noexcept {
+  const bool stop = command.type == CommandType::kStop;
+  if (error_ != ErrorCode::kNone) return ErrorCode::kAxisInErrorState;
+  // A stop has priority and may replace a stop; a halt is a motion command and is locked out.
+  if (!stop && locked_) return ErrorCode::kMotionCommandsLocked;
+  if (!stop && command.buffer_mode != 0) return ErrorCode::kBufferModeNotSupported;
+  if (!finite(command.deceleration) || !finite(command.jerk)) {
+    return ErrorCode::kParameterNotFinite;
+  }
+  if (command.deceleration < 0.0) return ErrorCode::kDecelerationNotAllowed;
+  if (command.jerk < 0.0) return ErrorCode::kJerkNotAllowed;
+  if (!controller_enabled()) return ErrorCode::kNoControllerOrFeedEnable;
+
+  // 0 = the running motion's deceleration and jerk, or the axis default when nothing runs.
+  const bool motion =
+      job_.is_motion() || job_.kind() == JobKind::kHalt || job_.kind() == JobKind::kStop;
+  Limits limits{motion ? job_.limits().velocity : config_.max_velocity,
+                motion ? job_.limits().acceleration : config_.acceleration,
+                motion ? job_.limits().deceleration : config_.deceleration,
+                motion ? job_.limits().jerk : config_.jerk};
+  if (command.deceleration > 0.0) limits.deceleration = command.deceleration;
+  if (command.jerk > 0.0) limits.jerk = command.jerk;
+  scratch_ = plan_stop(set_, limits.deceleration, limits.jerk);
+  if (!scratch_.ok()) return scratch_.error();
+  accept(stop ? JobKind::kStop : JobKind::kHalt, command.number, scratch_, scratch_.final_state().p,
+         0.0, limits);
+  if (stop) locked_ = true;
+  has_been_stopped_ = true;
+  return ErrorCode::kNone;
+}
+
+void ServoAxis::accept(JobKind kind, uint16_t number, const Profile& profile, double target,
+                       double target_velocity, const Limits& limits) noexcept {
+  if (job_.active() && job_.number() != 0 && job_.number() == cmd_no_ &&
+      (cmd_state_ == CommandState::kActive || cmd_state_ == CommandState::kReached)) {
+    answer_current(CommandState::kAborted);
+  }
+  job_.start(kind, number, profile, target, target_velocity, limits);
+  job_.set_override(ref_.PlcToNc.Override);
+  cmd_no_ = number;
+  answer_current(CommandState::kActive);
+  if (kind != JobKind::kVelocity) target_ = target;
+  monitors_.reset_windows();
+  if (kind == JobKind::kPosition || kind == JobKind::kVelocity) {
+    has_been_stopped_ = false;
+    warning_ = 0;
+  }
+}
+
+void ServoAxis::answer_current(plc::CommandState state, uint32_t code) noexcept {
+  cmd_state_ = state;
+  ref_.Mailbox.set_answer(cmd_no_, state, code);
+}
+
+}  // namespace nc::detail

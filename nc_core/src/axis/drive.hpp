@@ -1,0 +1,59 @@
+// The simulated drive and encoder of a continuous servo axis (SPEC A3).
+//
+// The drive receives a velocity command once per NC cycle and holds it for the cycle. Models:
+// - ideal: the drive's velocity equals its (delayed, saturated) input;
+// - first-order lag: v' = (u - v) / tau, integrated exactly over the cycle for a constant input,
+//   so the result does not depend on the step size beyond the hold itself.
+// Both take the dead time (whole NC cycles, a ring buffer reserved at set-up) and the optional
+// velocity saturation (drive_max_velocity). The encoder quantises the true position to whole
+// increments (round to nearest).
+//
+// configure() is a set-up function (allocates the dead-time line); the rest are cycle
+// functions.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "nc_core/axis_config.hpp"
+
+namespace nc::detail {
+
+class Drive {
+ public:
+  // Set-up: reserves the dead-time line; `position` is where the axis stands.
+  void configure(const AxisConfig& config, double cycle_time, double position);
+
+  // Cycle function: apply `command` (mm/s) for one cycle; `enabled` false = drive off (its input
+  // is 0; a lagging drive runs down with its own time constant).
+  void step(double command, bool enabled) noexcept;
+
+  // Sets the true position (and the measured one) without motion: used to place an axis.
+  void place(double position) noexcept;
+  // Encoder / virtual axis: the actual values are given (no quantisation, no dynamics).
+  void follow(double position, double velocity, double acceleration) noexcept;
+
+  double true_position() const noexcept { return position_; }
+  double measured_position() const noexcept { return measured_; }
+  double velocity() const noexcept { return velocity_; }
+  double acceleration() const noexcept { return acceleration_; }
+
+ private:
+  double quantise(double p) const noexcept;
+
+  bool lag_ = false;
+  double cycle_time_ = 0.001;
+  double tau_ = 0.0;
+  double decay_ = 0.0;  // exp(-T / tau)
+  double max_velocity_ = 0.0;
+  double increment_ = 0.0;
+  std::vector<double> delay_line_;
+  std::size_t delay_head_ = 0;
+
+  double position_ = 0.0;
+  double measured_ = 0.0;
+  double velocity_ = 0.0;
+  double acceleration_ = 0.0;
+};
+
+}  // namespace nc::detail

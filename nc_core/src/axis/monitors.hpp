@@ -1,0 +1,64 @@
+// The axis monitors of SPEC A4: following error, target position window, position range
+// window, software limit switches.
+//
+// Times become whole NC cycles once, at set-up:
+// - following error: an error when |lag| > limit has been seen in more consecutive cycles than
+//   fit in the filter time (count · T > filter time);
+// - target window: InTargetPosition once |p_act - target| <= window has held, after the end of
+//   set-value generation, for count · T >= window time (0 → at the first cycle in the window);
+// - position range: InPositionArea while |p_act - target| <= window after the end of set-value
+//   generation (TwinCAT checks both windows only once the positioning phase has ended).
+// A disabled window reports "in" as soon as the generation has ended, so "done" never waits on
+// a monitor that is switched off.
+//
+// configure() is set-up; the rest are cycle functions.
+#pragma once
+
+#include <cstdint>
+
+#include "nc_core/axis_config.hpp"
+
+namespace nc::detail {
+
+class Monitors {
+ public:
+  void configure(const AxisConfig& config, double cycle_time) noexcept;
+
+  // Following error: true in the cycle the error must be raised. `armed` false (drive off, axis
+  // already in error) resets the filter.
+  bool following_error(double lag, bool armed) noexcept;
+
+  // Target and range windows. `settled` = the set-value generation of a positioning (or stop)
+  // has ended; false resets the target-window timer.
+  void windows(double actual, double target, bool settled) noexcept;
+  void reset_windows() noexcept;
+  bool in_target_position() const noexcept { return in_target_; }
+  bool in_position_area() const noexcept { return in_area_; }
+
+  // Software limits on a position (true: beyond an enabled limit).
+  bool below_min(double p) const noexcept { return min_enabled_ && p < min_; }
+  bool above_max(double p) const noexcept { return max_enabled_ && p > max_; }
+
+ private:
+  bool fe_enabled_ = true;
+  double fe_limit_ = 5.0;
+  uint64_t fe_filter_cycles_ = 0;
+  uint64_t fe_count_ = 0;
+
+  bool tw_enabled_ = true;
+  double tw_window_ = 2.0;
+  uint64_t tw_cycles_ = 1;
+  uint64_t tw_count_ = 0;
+  bool in_target_ = false;
+
+  bool pr_enabled_ = true;
+  double pr_window_ = 5.0;
+  bool in_area_ = false;
+
+  bool min_enabled_ = false;
+  bool max_enabled_ = false;
+  double min_ = 0.0;
+  double max_ = 0.0;
+};
+
+}  // namespace nc::detail

@@ -1,0 +1,90 @@
+// Step f of the NC cycle for one axis: the NC→PLC image (SPEC A7; StateDWord bits and AxisState
+// values as TwinCAT / Tc2_MC2 number them).
+#include <cmath>
+
+#include "axis/servo_axis.hpp"
+
+namespace nc::detail {
+
+namespace {
+
+double modulo(double p, double factor) noexcept {
+  double m = p - factor * std::floor(p / factor);
+  if (m >= factor || m < 0.0) m = 0.0;  // rounding at the period edge
+  return m;
+}
+
+}  // namespace
+
+void ServoAxis::publish(uint64_t cycle_counter) noexcept {
+  using plc::AxisState;
+  plc::NCTOPLC_AXIS_REF& out = ref_.NcToPlc;
+  const double actual = drive_.measured_position();
+  const bool enabled = controller_enabled();
+  const bool error = error_ != ErrorCode::kNone;
+  const JobKind kind = job_.kind();
+
+  out.SetPos = set_.p;
+  out.SetVelo = set_.v;
+  out.SetAcc = set_.a;
+  out.SetJerk = set_jerk_;
+  out.ActPos = actual;
+  out.ActVelo = drive_.velocity();
+  out.ActAcc = drive_.acceleration();
+  out.PosDiff = set_.p - actual;
+  out.ModuloActPos = modulo(actual, config_.modulo_factor);
+  out.ModuloSetPos = modulo(set_.p, config_.modulo_factor);
+  out.TargetPos = target_;
+  out.TargetVelo = job_.active() ? job_.target_velocity() : 0.0;
+  out.CompensationDistance = 0.0;
+  out.ErrorCode = plc::to_id(error_);
+  out.Warning = warning_;
+  out.CmdNo = cmd_no_;
+  out.CmdState = static_cast<uint16_t>(cmd_state_);
+  out.CoupleState = static_cast<uint32_t>(plc::CoupleState::kSingle);
+  out.AxisIndex = static_cast<int32_t>(index_);
+  out.CycleCounter = static_cast<uint32_t>(cycle_counter);
+
+  // Constant velocity: a velocity job at its level, or the cruise phase of a positioning.
+  const double a_eps = 1e-9 * job_.limits().acceleration + 1e-12;
+  const bool constant_velocity = (kind == JobKind::kVelocity && job_.velocity_reached()) ||
+                                 (kind == JobKind::kPosition && !job_.generation_ended() &&
+                                  set_.v != 0.0 && std::abs(set_.a) <= a_eps && set_jerk_ == 0.0);
+
+  uint32_t word = 0;
+  word = plc::with_bit(word, plc::kStateOperational, enabled && !error);
+  word = plc::with_bit(word, plc::kStateHomed, true);  // no homing yet: every axis counts as homed
+  word = plc::with_bit(word, plc::kStateNotMoving,
+                       std::abs(drive_.velocity()) < config_.standstill_window);
+  word = plc::with_bit(word, plc::kStateInPositionArea, monitors_.in_position_area());
+  word = plc::with_bit(word, plc::kStateInTargetPosition, monitors_.in_target_position());
+  word = plc::with_bit(word, plc::kStateHasBeenStopped, has_been_stopped_);
+  word = plc::with_bit(word, plc::kStateHasJob, job_.active());
+  word = plc::with_bit(word, plc::kStatePositiveDirection, set_.v > 0.0);
+  word = plc::with_bit(word, plc::kStateNegativeDirection, set_.v < 0.0);
+  word = plc::with_bit(word, plc::kStateConstantVelocity, constant_velocity);
+  word = plc::with_bit(word, plc::kStateContinuousMotion, kind == JobKind::kVelocity);
+  word = plc::with_bit(word, plc::kStatePtpMode, true);
+  word = plc::with_bit(word, plc::kStateSoftLimitMinExceeded, monitors_.below_min(actual));
+  word = plc::with_bit(word, plc::kStateSoftLimitMaxExceeded, monitors_.above_max(actual));
+  word = plc::with_bit(word, plc::kStateMotionCommandsLocked, locked_);
+  word = plc::with_bit(word, plc::kStateError, error);
+  out.StateDWord = word;
+
+  // PLCopen state, in the priority of the PLCopen state diagram.
+  AxisState state = AxisState::kStandstill;
+  if (error) {
+    state = AxisState::kErrorStop;
+  } else if (!enabled) {
+    state = AxisState::kDisabled;
+  } else if (locked_ || kind == JobKind::kStop || kind == JobKind::kEmergencyStop) {
+    state = AxisState::kStopping;
+  } else if (kind == JobKind::kPosition || kind == JobKind::kHalt) {
+    state = AxisState::kDiscreteMotion;
+  } else if (kind == JobKind::kVelocity) {
+    state = AxisState::kContinuousMotion;
+  }
+  out.AxisState = static_cast<uint32_t>(state);
+}
+
+}  // namespace nc::detail

@@ -1,0 +1,184 @@
+// Steps b … e of the NC cycle for one axis: set values from the master job, position control,
+// drive and encoder, monitors, job completion and the axis error (SPEC A3, A4, A6).
+#include "axis/servo_axis.hpp"
+
+#include <cmath>
+
+namespace nc::detail {
+
+using plc::CommandState;
+
+ServoAxis::ServoAxis(const AxisConfig& config, double cycle_time, std::size_t index)
+    : config_(config), cycle_time_(cycle_time), index_(index) {
+  controller_.kv = config_.position_kv;
+  controller_.feed_forward = config_.velocity_feed_forward;
+  drive_.configure(config_, cycle_time_, 0.0);
+  monitors_.configure(config_, cycle_time_);
+  set_ = KinematicState{drive_.measured_position(), 0.0, 0.0};
+  previous_set_position_ = set_.p;
+  target_ = set_.p;
+  publish(0);
+}
+
+bool ServoAxis::controller_enabled() const noexcept {
+  return plc::test_bit(ref_.PlcToNc.ControlDWord, plc::kControlEnable);
+}
+
+bool ServoAxis::feed_enabled(double direction) const noexcept {
+  if (direction > 0.0) return plc::test_bit(ref_.PlcToNc.ControlDWord, plc::kControlFeedEnablePlus);
+  if (direction < 0.0) {
+    return plc::test_bit(ref_.PlcToNc.ControlDWord, plc::kControlFeedEnableMinus);
+  }
+  return true;
+}
+
+void ServoAxis::cycle(uint64_t cycle_counter) noexcept {
+  job_.set_override(ref_.PlcToNc.Override);
+  handle_commands();
+  check_enables();
+  generate_set_values();
+  control_and_drive();
+  run_monitors();
+  finish_job();
+  publish(cycle_counter);
+}
+
+void ServoAxis::check_enables() noexcept {
+  if (!controller_enabled()) {
+    // Losing the controller enable during a job is an axis error; there is no ramp to run (the
+    // drive is off), so the job ends here and the set values follow the actual position.
+    if (job_.active() && job_.kind() != JobKind::kEmergencyStop) {
+      raise_error(ErrorCode::kControllerEnableMissing);
+    }
+    job_.clear();
+    return;
+  }
+  // Feed enable removed in the direction of travel: the axis stops on its error ramp.
+  if (job_.is_motion() && error_ == ErrorCode::kNone) {
+    if (set_.v > 0.0 && !feed_enabled(1.0)) {
+      raise_error(ErrorCode::kFeedEnablePlusMissing);
+    } else if (set_.v < 0.0 && !feed_enabled(-1.0)) {
+      raise_error(ErrorCode::kFeedEnableMinusMissing);
+    }
+  }
+}
+
+void ServoAxis::generate_set_values() noexcept {
+  previous_set_position_ = set_.p;
+  if (!controller_enabled()) {
+    // TwinCAT: without controller enable the set position follows the actual position.
+    set_ = KinematicState{drive_.measured_position(), 0.0, 0.0};
+    set_jerk_ = 0.0;
+    target_ = set_.p;
+    return;
+  }
+  if (job_.active()) {
+    set_ = job_.advance(cycle_time_);
+    set_jerk_ = job_.jerk();
+  } else {
+    set_.v = 0.0;
+    set_.a = 0.0;
+    set_jerk_ = 0.0;
+  }
+}
+
+void ServoAxis::control_and_drive() noexcept {
+  if (config_.kind == AxisKind::kEncoder) {
+    // Encoder / virtual axis: no controller, the actual values are the set values.
+    drive_.follow(set_.p, set_.v, set_.a);
+    return;
+  }
+  const double command =
+      controller_.command(previous_set_position_, set_.p, drive_.measured_position(), cycle_time_);
+  drive_.step(command, controller_enabled());
+}
+
+void ServoAxis::run_monitors() noexcept {
+  const double actual = drive_.measured_position();
+  const bool armed = controller_enabled() && error_ == ErrorCode::kNone;
+  if (monitors_.following_error(set_.p - actual, armed)) {
+    raise_error(ErrorCode::kFollowingErrorPosition);
+  }
+  // Software limits during motion: the set position passes an enabled limit while it moves
+  // outward. Moving back in from outside (seed 000 §2.1 note 5) is not an error.
+  if (error_ == ErrorCode::kNone && job_.active() && job_.kind() != JobKind::kEmergencyStop) {
+    if (set_.v > 0.0 && monitors_.above_max(set_.p)) {
+      raise_error(ErrorCode::kSoftLimitMaxDuringMotion);
+    } else if (set_.v < 0.0 && monitors_.below_min(set_.p)) {
+      raise_error(ErrorCode::kSoftLimitMinDuringMotion);
+    }
+  }
+  const bool settled =
+      controller_enabled() &&
+      (!job_.active() || (job_.kind() != JobKind::kVelocity && job_.generation_ended()));
+  monitors_.windows(actual, target_, settled);
+}
+
+void ServoAxis::finish_job() noexcept {
+  switch (job_.kind()) {
+    case JobKind::kNone:
+      break;
+    case JobKind::kPosition:
+      // Done = set-value generation ended and the target window reached (or switched off).
+      if (job_.generation_ended() && monitors_.in_target_position()) {
+        answer_current(CommandState::kDone);
+        job_.clear();
+      }
+      break;
+    case JobKind::kVelocity:
+      if (job_.velocity_reached() && cmd_state_ == CommandState::kActive) {
+        answer_current(CommandState::kReached);
+      }
+      break;
+    case JobKind::kHalt:
+    case JobKind::kStop:
+      if (job_.generation_ended()) {
+        answer_current(CommandState::kDone);
+        job_.clear();
+      }
+      break;
+    case JobKind::kEmergencyStop:
+      if (job_.generation_ended()) job_.clear();
+      break;
+  }
+}
+
+void ServoAxis::raise_error(ErrorCode code) noexcept {
+  if (error_ != ErrorCode::kNone) return;  // the first error stays until reset
+  error_ = code;
+  has_been_stopped_ = true;
+  if (job_.active() && job_.number() != 0 && job_.number() == cmd_no_ &&
+      (cmd_state_ == CommandState::kActive || cmd_state_ == CommandState::kReached)) {
+    answer_current(CommandState::kError, plc::to_id(code));
+  }
+  if (!controller_enabled()) {
+    job_.clear();
+    return;
+  }
+  // SPEC A6: the axis stops on its own emergency ramp, from the set state it has now.
+  scratch_ = plan_stop(set_, config_.emergency_deceleration, config_.emergency_jerk);
+  if (!scratch_.ok()) {
+    job_.clear();
+    return;
+  }
+  const Limits limits{config_.max_velocity, config_.acceleration, config_.emergency_deceleration,
+                      config_.emergency_jerk};
+  job_.start(JobKind::kEmergencyStop, 0, scratch_, scratch_.final_state().p, 0.0, limits);
+  target_ = scratch_.final_state().p;
+  monitors_.reset_windows();
+}
+
+void ServoAxis::reset_error() noexcept {
+  warning_ = 0;
+  if (error_ == ErrorCode::kNone) return;
+  error_ = ErrorCode::kNone;
+  if (!job_.active()) {
+    // The axis holds where it stands: no following error is carried over into the next start.
+    set_ = KinematicState{drive_.measured_position(), 0.0, 0.0};
+    set_jerk_ = 0.0;
+    target_ = set_.p;
+    monitors_.reset_windows();
+  }
+}
+
+}  // namespace nc::detail

@@ -1,0 +1,78 @@
+#include "nc_core/kernel.hpp"
+
+#include <string>
+#include <utility>
+
+#include <nlohmann/json.hpp>
+
+#include "axis/servo_axis.hpp"
+#include "nc_core/config.hpp"
+
+namespace nc {
+
+Kernel::Kernel(KernelConfig config) : config_(config) {
+  validate(config_);
+}
+
+Kernel::~Kernel() = default;
+Kernel::Kernel(Kernel&&) noexcept = default;
+Kernel& Kernel::operator=(Kernel&&) noexcept = default;
+
+Kernel Kernel::from_json(const nlohmann::json& document) {
+  KernelSetup setup = parse_kernel_setup(document);
+  Kernel kernel(setup.kernel);
+  for (std::size_t i = 0; i < setup.axes.size(); ++i) {
+    try {
+      kernel.add_axis(setup.axes[i]);
+    } catch (const ConfigError& e) {
+      throw e.prefixed("/axes/" + std::to_string(i));
+    }
+  }
+  return kernel;
+}
+
+plc::AXIS_REF& Kernel::add_axis(const AxisConfig& config) {
+  validate(config);
+  AxisConfig effective = config;
+  if (effective.id == 0) effective.id = static_cast<int>(axes_.size()) + 1;
+  for (const auto& other : axes_) {
+    if (other->config().name == effective.name) {
+      throw ConfigError("/name", "must be unique in the kernel", effective.name);
+    }
+    if (other->config().id == effective.id) {
+      throw ConfigError("/id", "must be unique in the kernel", std::to_string(effective.id));
+    }
+  }
+  axes_.reserve(axes_.size() + 1);
+  axes_.push_back(std::make_unique<detail::ServoAxis>(effective, config_.cycle_time, axes_.size()));
+  return axes_.back()->ref();
+}
+
+detail::ServoAxis& Kernel::find(std::string_view name) const {
+  for (const auto& a : axes_) {
+    if (a->config().name == name) return *a;
+  }
+  throw ConfigError("/axes", "has no axis with this name", std::string(name));
+}
+
+plc::AXIS_REF& Kernel::axis(std::string_view name) {
+  return find(name).ref();
+}
+const plc::AXIS_REF& Kernel::axis(std::string_view name) const {
+  return find(name).ref();
+}
+plc::AXIS_REF& Kernel::axis(std::size_t index) noexcept {
+  return axes_[index]->ref();
+}
+const AxisConfig& Kernel::config(std::string_view name) const {
+  return find(name).config();
+}
+
+void Kernel::cycle() noexcept {
+  const uint64_t counter = cycles_ + 1;
+  for (const auto& a : axes_)
+    a->cycle(counter);
+  cycles_ = counter;
+}
+
+}  // namespace nc
