@@ -152,7 +152,7 @@ struct DescribeVisitor {
     add(f, "string", nlohmann::json(value).dump(), rule.non_empty ? "not empty" : "any");
   }
   void operator()(const FieldInfo& f, bool value, const FlagRule&) {
-    add(f, "boolean", value ? "true" : "false", "true | false");
+    add(f, "boolean", value ? "true" : "false", "true, false");
   }
   template <class E>
   void operator()(const FieldInfo& f, E value, const EnumRule<E>& rule) {

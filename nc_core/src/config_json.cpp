@@ -106,11 +106,17 @@ struct ReadVisitor {
     if (!j->is_number_integer()) {
       throw ConfigError(child(pointer, f.key), "must be an integer", shown(*j));
     }
-    // Out of int's range cannot be stored; it is outside every IntRule anyway.
+    // Out of int's range cannot be stored; it is outside every IntRule anyway, and the message
+    // states both bounds so that "must be >= 0" is not said of a huge positive number.
     const bool fits = j->is_number_unsigned()
                           ? j->get<std::uint64_t>() <= static_cast<std::uint64_t>(INT_MAX)
                           : j->get<std::int64_t>() >= INT_MIN && j->get<std::int64_t>() <= INT_MAX;
-    if (!fits) throw ConfigError(child(pointer, f.key), config_text::must(rule), shown(*j));
+    if (!fits) {
+      throw ConfigError(child(pointer, f.key),
+                        std::string("must be in [") + std::to_string(rule.min) + ", " +
+                            std::to_string(rule.max) + "]",
+                        shown(*j));
+    }
     value = static_cast<int>(j->get<std::int64_t>());
   }
   void operator()(const FieldInfo& f, bool& value, const FlagRule&) const {
@@ -219,6 +225,15 @@ class DuplicateKeyFinder {
 
   const std::optional<ConfigError>& error() const { return error_; }
 
+  // Where the parser is: the key or array element being read.
+  std::string current_pointer() const {
+    std::string out;
+    for (const Frame& f : frames_) {
+      out += f.is_array ? std::string("/") + std::to_string(f.index) : child("", f.key);
+    }
+    return out;
+  }
+
  private:
   struct Frame {
     bool is_array;
@@ -231,17 +246,19 @@ class DuplicateKeyFinder {
     if (!frames_.empty() && frames_.back().is_array) ++frames_.back().index;
   }
 
-  std::string current_pointer() const {
-    std::string out;
-    for (const Frame& f : frames_) {
-      out += f.is_array ? std::string("/") + std::to_string(f.index) : child("", f.key);
-    }
-    return out;
-  }
-
   std::vector<Frame> frames_;
   std::optional<ConfigError> error_;
 };
+
+// The library's message without its "[json.exception.parse_error.101] " tag.
+std::string without_tag(const char* what) {
+  std::string message = what;
+  const auto tag_end = message.find("] ");
+  if (message.rfind("[json.exception.", 0) == 0 && tag_end != std::string::npos) {
+    message.erase(0, tag_end + 2);
+  }
+  return message;
+}
 
 json parse_text(std::string_view text) {
   DuplicateKeyFinder finder;
@@ -251,13 +268,16 @@ json parse_text(std::string_view text) {
       return finder.on_event(event, parsed);
     });
   } catch (const json::parse_error& e) {
-    // Drop the library's "[json.exception.parse_error.101] " tag; keep position and reason.
-    std::string message = e.what();
-    const auto tag_end = message.find("] ");
-    if (message.rfind("[json.exception.", 0) == 0 && tag_end != std::string::npos) {
-      message.erase(0, tag_end + 2);
-    }
-    throw ConfigError("", std::string("invalid JSON: ") + message);
+    throw ConfigError("", std::string("invalid JSON: ") + without_tag(e.what()));
+  } catch (const json::out_of_range& e) {
+    // A number beyond double (1e999): the parser stops at it, so the key being read is known.
+    std::string message = without_tag(e.what());
+    const auto open = message.find('\'');
+    const auto close = message.rfind('\'');
+    std::string token = open != std::string::npos && close > open
+                            ? message.substr(open + 1, close - open - 1)
+                            : message;
+    throw ConfigError(finder.current_pointer(), "must be finite", std::move(token));
   }
   if (finder.error()) throw *finder.error();
   return document;

@@ -21,7 +21,7 @@ template <class E>
 std::string range(const EnumRule<E>& rule) {
   std::string out;
   for (const auto& n : rule.names) {
-    if (!out.empty()) out += " | ";
+    if (!out.empty()) out += ", ";
     out += '"';
     out += n.name;
     out += '"';

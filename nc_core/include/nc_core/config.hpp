@@ -87,7 +87,7 @@ struct FieldDoc {
   std::string type;           // "number", "integer", "boolean", "string", "enum"
   std::string unit;           // "mm/s", or "" when dimensionless
   std::string default_value;  // as JSON: 2200, "continuous", true
-  std::string range;          // "> 0", "1 … 4", "\"ideal\" | \"first_order_lag\""
+  std::string range;          // "> 0", "[1, 4]", "\"ideal\", \"first_order_lag\""
   std::string meaning;
 };
 std::vector<FieldDoc> describe_kernel_fields();

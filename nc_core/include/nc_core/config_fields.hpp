@@ -155,17 +155,18 @@ void visit_fields(Config& c, Visitor&& v) {
 
   v(FieldInfo{"target_window_enabled", "", "monitor the target window (InTargetPosition)"},
     c.target_window_enabled, FlagRule{});
-  v(FieldInfo{"target_window", "mm", "|actual - target| at most this for InTargetPosition"},
+  v(FieldInfo{"target_window", "mm", "distance actual to target allowed for InTargetPosition"},
     c.target_window, kPositive);
   v(FieldInfo{"target_window_time", "s", "time inside the target window before InTargetPosition"},
     c.target_window_time, kNonNegative);
 
   v(FieldInfo{"position_range_enabled", "", "monitor the position range (InPositionArea)"},
     c.position_range_enabled, FlagRule{});
-  v(FieldInfo{"position_range_window", "mm", "|actual - target| at most this for InPositionArea"},
+  v(FieldInfo{"position_range_window", "mm",
+              "distance actual to target allowed for InPositionArea"},
     c.position_range_window, kPositive);
 
-  v(FieldInfo{"standstill_window", "mm/s", "|actual velocity| below this counts as not moving"},
+  v(FieldInfo{"standstill_window", "mm/s", "actual speed below this counts as not moving"},
     c.standstill_window, kPositive);
 }
 
