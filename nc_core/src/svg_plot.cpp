@@ -21,6 +21,7 @@ constexpr double kTickLabelHeight = 22.0;
 constexpr double kPanelGap = 14.0;
 constexpr double kAxisTitleHeight = 22.0;
 constexpr int kTargetTicks = 5;
+constexpr double kTickSlack = 0.02;  // of a tick step
 
 struct Ticks {
   double lo = 0.0;
@@ -44,10 +45,10 @@ Ticks nice_ticks(double min, double max) {
     for (const double factor : {1.0, 2.0, 2.5, 5.0}) {
       Ticks ticks;
       ticks.step = factor * scale * magnitude;
-      // The slack keeps a value that is a multiple of the step (2000 mm) on the last tick
-      // instead of opening one more interval for a rounding error.
-      ticks.lo = std::floor(min / ticks.step + 1e-9) * ticks.step;
-      ticks.hi = std::ceil(max / ticks.step - 1e-9) * ticks.step;
+      // The slack (2 % of a step, under a pixel) keeps a value just past a tick — an actual
+      // position that overshoots 2000 mm by 1 mm — from opening one more interval.
+      ticks.lo = std::floor(min / ticks.step + kTickSlack) * ticks.step;
+      ticks.hi = std::ceil(max / ticks.step - kTickSlack) * ticks.step;
       if (ticks.hi <= ticks.lo) ticks.hi = ticks.lo + ticks.step;
       const double count = std::round((ticks.hi - ticks.lo) / ticks.step);
       if (count < 3.0 || count > 8.0) continue;

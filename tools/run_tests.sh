@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# The whole test suite: set up, then
+#   1. a Release build with warnings as errors → ctest (every test, the install checks too);
+#   2. a build under AddressSanitizer + UndefinedBehaviorSanitizer → ctest again (tests that
+#      count allocations and the install checks are left out there).
+# Exits non-zero when a build or a test fails; the last line sums up both runs. No benchmarks.
+set -uo pipefail
+
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+jobs="$(nproc 2> /dev/null || echo 2)"
+
+bash "${root}/tools/setup.sh" || exit 1
+
+# run <label> <build dir> <cmake args…>: configure, build, test; sets result_<label>.
+run() {
+  local label="$1" build="$2"
+  shift 2
+  echo "=== ${label}: configure and build (${build}) ==="
+  if ! cmake -S "${root}" -B "${build}" -DNCSDK_BUILD_TESTS=ON -DNCSDK_BUILD_SAMPLES=ON \
+      -DNCSDK_BUILD_BENCHMARKS=OFF -DNCSDK_WERROR=ON "$@"; then
+    printf -v "result_${label}" '%s' "configure failed"
+    return 1
+  fi
+  if ! cmake --build "${build}" -j "${jobs}"; then
+    printf -v "result_${label}" '%s' "build failed"
+    return 1
+  fi
+  echo "=== ${label}: ctest ==="
+  local log="${build}/ctest-summary.log"
+  ctest --test-dir "${build}" --output-on-failure -j "${jobs}" | tee "${log}"
+  local status=${PIPESTATUS[0]}
+  local summary
+  summary="$(grep -E '[0-9]+% tests passed' "${log}" | tail -n1)"
+  printf -v "result_${label}" '%s' "${summary:-no ctest summary}"
+  return "${status}"
+}
+
+failed=0
+result_release="not run"
+result_sanitize="not run"
+
+run release "${root}/build-tests-release" -DCMAKE_BUILD_TYPE=Release || failed=1
+
+# The sanitizers need no optimisation beyond -O1 to keep their reports exact; -g for lines.
+ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=0}" \
+UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}" \
+  run sanitize "${root}/build-tests-sanitize" -DNCSDK_SANITIZE=ON -DCMAKE_BUILD_TYPE=Debug \
+  "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g" || failed=1
+
+echo "=== summary ==="
+echo "release:   ${result_release}"
+echo "sanitize:  ${result_sanitize}"
+if [[ ${failed} -eq 0 ]]; then
+  echo "run_tests: PASSED (release: ${result_release}; sanitize: ${result_sanitize})"
+else
+  echo "run_tests: FAILED (release: ${result_release}; sanitize: ${result_sanitize})"
+fi
+exit "${failed}"
