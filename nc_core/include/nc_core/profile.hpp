@@ -53,12 +53,16 @@ class Profile {
   ErrorCode error() const noexcept { return error_; }
   double duration() const noexcept { return duration_; }
 
-  // State at time t; t < 0 gives the start state, t >= duration() the final state. Exact at
-  // segment boundaries (each segment stores its start state).
+  // State at time t; t < 0 gives the start state, t >= duration() the final state (for a
+  // velocity profile, see holds_velocity()). Exact at segment boundaries (each segment stores its
+  // start state).
   KinematicState at(double t) const noexcept;
   double jerk_at(double t) const noexcept;
   KinematicState start_state() const noexcept { return start_; }
   KinematicState final_state() const noexcept { return final_; }
+  // True for plan_velocity's profiles: past the end the motion goes on at the final velocity
+  // (continuous motion holds its velocity), so at(t) extrapolates p = p_end + v_end (t - T).
+  bool holds_velocity() const noexcept { return holds_velocity_; }
 
   std::size_t segment_count() const noexcept { return count_; }
   const Segment& segment(std::size_t i) const noexcept { return segments_[i]; }
@@ -66,9 +70,14 @@ class Profile {
   // Builder used by the planners: start at a state, append constant-jerk pieces, then close.
   void reset(const KinematicState& start) noexcept;
   bool append(double duration, double jerk) noexcept;  // false when full; zero lengths skipped
+  // The same, with the end acceleration / velocity the planner knows exactly (a bound, 0, V) set
+  // instead of the integrated value, so rounding does not drift along long holds; NaN = integrate.
+  bool append(double duration, double jerk, double exact_a, double exact_v) noexcept;
   // Ends the profile; when `exact_end` is given, the final state is set to it (removing the
   // rounding of the integration) — the planners pass the exact target state.
-  void close(const KinematicState* exact_end = nullptr) noexcept;
+  void close(const KinematicState* exact_end = nullptr, bool holds_velocity = false) noexcept;
+  // The running end state while building (integrated from the last segment).
+  KinematicState end_state() const noexcept { return end_; }
 
  private:
   std::array<Segment, kMaxSegments> segments_{};
@@ -76,7 +85,9 @@ class Profile {
   double duration_ = 0.0;
   KinematicState start_{};
   KinematicState final_{};
+  KinematicState end_{};
   ErrorCode error_ = ErrorCode::kNone;
+  bool holds_velocity_ = false;
 };
 
 // From any state to rest at `target` in the least time. Start states outside the limits are
@@ -84,9 +95,10 @@ class Profile {
 // before produce one continuous profile that reverses through v = 0.
 Profile plan_position(const KinematicState& start, double target, const Limits& limits) noexcept;
 
-// From any state to the constant velocity `velocity` (either sign, |velocity| <= V), then hold
-// it. A lower level is reached from above without undershoot. The profile's last segment is the
-// hold (duration 0; at(t) past the end extrapolates at the held velocity).
+// From any state to the constant velocity `velocity` (either sign, |velocity| <= V, otherwise
+// kVelocityNotAllowed), then hold it. A lower level is reached from above without undershoot.
+// duration() is the time until the velocity is reached; past it at(t) extrapolates at the held
+// velocity (holds_velocity() is true).
 Profile plan_velocity(const KinematicState& start, double velocity, const Limits& limits) noexcept;
 
 // The shortest stop from any state with deceleration limit `deceleration` and jerk `jerk`.

@@ -1,0 +1,109 @@
+// plan_position: time-optimal motion from any state to rest at a target.
+//
+// The time-optimal profile is "push, then stop": push = the time-optimal velocity change towards
+// ±V (then cruise at ±V), continued for a time tau; stop = the shortest stop from the state
+// reached. The point S(tau) where that stop ends moves monotonically towards the push direction,
+// so the direction is the side of the target relative to the shortest stop from the start, and
+// tau is the root of S(tau) = target: first bracketed between the push's piece boundaries, then
+// refined to machine precision. Seed 000 §2.1's 7 phases are the rest-to-rest special case (push
+// = phases 1-3 up to the switch, cruise = phase 4, stop = phases 5-7); a target the axis cannot
+// stop before gives a push in the opposite direction, i.e. one continuous profile reversing
+// through v = 0. Start states outside the limits are brought back by the push itself (it is a
+// velocity change to ±V and so returns inside the bounds at maximum jerk without undershoot).
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+
+#include "nc_core/profile.hpp"
+#include "profile/root.hpp"
+#include "profile/validate.hpp"
+#include "profile/velocity_change.hpp"
+
+namespace nc {
+namespace {
+
+using detail::Bounds;
+using detail::Piece;
+
+// Appends pieces (mirrored back by `dir`), closes at rest on the target.
+Profile finish(const KinematicState& start, double target, double dir, const Piece* head,
+               int n_head, double cruise, const Piece* tail, int n_tail) noexcept {
+  Profile profile;
+  profile.reset(start);
+  for (int i = 0; i < n_head; ++i) {
+    profile.append(head[i].t, dir * head[i].j, dir * head[i].a_end, dir * head[i].v_end);
+  }
+  profile.append(cruise, 0.0);
+  for (int i = 0; i < n_tail; ++i) {
+    profile.append(tail[i].t, dir * tail[i].j, dir * tail[i].a_end, dir * tail[i].v_end);
+  }
+  const KinematicState end{target, 0.0, 0.0};
+  profile.close(&end);
+  if (!detail::profile_finite(profile)) return Profile::failure(ErrorCode::kPlannerNoSolution);
+  return profile;
+}
+
+}  // namespace
+
+Profile plan_position(const KinematicState& start, double target, const Limits& limits) noexcept {
+  ErrorCode e = detail::check_state(start);
+  if (e == ErrorCode::kNone && !std::isfinite(target)) e = ErrorCode::kPositionNotFinite;
+  if (e == ErrorCode::kNone) e = detail::check_limits(limits);
+  if (e != ErrorCode::kNone) return Profile::failure(e);
+
+  const Bounds bounds{limits.acceleration, limits.deceleration, limits.jerk};
+  const double distance = target - start.p;
+
+  Piece stop[detail::kMaxChangePieces];
+  int n_stop = detail::velocity_change(start.v, start.a, 0.0, bounds, stop);
+  if (n_stop < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
+  const double stop_distance = detail::pieces_distance(start.v, start.a, stop, n_stop);
+  const double rest = distance - stop_distance;
+  // A target within rounding of the shortest stop's end is that end: re-planning from a state
+  // sampled on a profile's final stop (absolute positions carry rounding of a few ulp) must give
+  // that same stop, not a tiny push whose duration grows with the cube root of the rounding.
+  const double dead_zone = 64.0 * DBL_EPSILON * std::max(std::abs(start.p), std::abs(target));
+  if (std::abs(rest) <= dead_zone) {
+    return finish(start, target, 1.0, stop, n_stop, 0.0, nullptr, 0);
+  }
+
+  // Work mirrored so that the target lies ahead (+) of the shortest stop, positions relative to
+  // the start (no cancellation against a large absolute position).
+  const double dir = rest > 0.0 ? 1.0 : -1.0;
+  const double goal = dir * distance;
+  Piece push[detail::kMaxChangePieces];
+  const int n_push =
+      detail::velocity_change(dir * start.v, dir * start.a, limits.velocity, bounds, push);
+  if (n_push < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
+
+  KinematicState s{0.0, dir * start.v, dir * start.a};
+  for (int i = 0; i < n_push; ++i) {
+    const KinematicState next = detail::advance(s, push[i]);
+    const double s_next = next.p + detail::stop_distance(next.v, next.a, bounds);
+    if (s_next >= goal) {
+      // The switch from push to stop lies in this piece.
+      const double jerk = push[i].j;
+      auto f = [&](double tau) {
+        const KinematicState x = detail::advance(s, jerk, tau);
+        return x.p + detail::stop_distance(x.v, x.a, bounds) - goal;
+      };
+      const double f0 = s.p + detail::stop_distance(s.v, s.a, bounds) - goal;
+      const double f_tol = 2.0 * DBL_EPSILON * std::abs(goal);
+      const double tau = detail::find_root(f, 0.0, push[i].t, f0, s_next - goal, f_tol);
+      const KinematicState x = detail::advance(s, jerk, tau);
+      push[i] = Piece{tau, jerk, x.a, NAN};
+      n_stop = detail::velocity_change(x.v, x.a, 0.0, bounds, stop);
+      if (n_stop < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
+      return finish(start, target, dir, push, i + 1, 0.0, stop, n_stop);
+    }
+    s = next;
+  }
+  // The push reaches V: cruise for the rest, then stop from (V, 0).
+  n_stop = detail::velocity_change(limits.velocity, 0.0, 0.0, bounds, stop);
+  if (n_stop < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
+  const double s_end = s.p + detail::pieces_distance(limits.velocity, 0.0, stop, n_stop);
+  const double cruise = (goal - s_end) / limits.velocity;
+  return finish(start, target, dir, push, n_push, cruise, stop, n_stop);
+}
+
+}  // namespace nc

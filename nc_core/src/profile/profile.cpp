@@ -1,0 +1,87 @@
+// The Profile container: constant-jerk segments, each storing its own start state, so that
+// evaluation is exact at segment boundaries and rounding never accumulates within a segment.
+#include "nc_core/profile.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "profile/kinematics.hpp"
+
+namespace nc {
+
+Profile Profile::failure(ErrorCode code) noexcept {
+  Profile profile;
+  profile.error_ = code;
+  return profile;
+}
+
+void Profile::reset(const KinematicState& start) noexcept {
+  count_ = 0;
+  duration_ = 0.0;
+  start_ = start;
+  end_ = start;
+  final_ = start;
+  error_ = ErrorCode::kNone;
+  holds_velocity_ = false;
+}
+
+bool Profile::append(double duration, double jerk) noexcept {
+  return append(duration, jerk, NAN, NAN);
+}
+
+bool Profile::append(double duration, double jerk, double exact_a, double exact_v) noexcept {
+  if (!(duration > 0.0)) return true;
+  if (count_ == kMaxSegments) return false;
+  Segment& seg = segments_[count_++];
+  seg.t0 = duration_;
+  seg.duration = duration;
+  seg.p = end_.p;
+  seg.v = end_.v;
+  seg.a = end_.a;
+  seg.j = jerk;
+  end_ = detail::advance(end_, jerk, duration);
+  if (!std::isnan(exact_a)) end_.a = exact_a;
+  if (!std::isnan(exact_v)) end_.v = exact_v;
+  duration_ += duration;
+  return true;
+}
+
+void Profile::close(const KinematicState* exact_end, bool holds_velocity) noexcept {
+  final_ = exact_end != nullptr ? *exact_end : end_;
+  holds_velocity_ = holds_velocity;
+}
+
+KinematicState Profile::at(double t) const noexcept {
+  if (t >= duration_) {
+    if (!holds_velocity_) return final_;
+    return KinematicState{final_.p + final_.v * (t - duration_), final_.v, 0.0};
+  }
+  if (!(t > 0.0)) return start_;
+  std::size_t i = count_ - 1;
+  while (i > 0 && segments_[i].t0 > t)
+    --i;
+  const Segment& seg = segments_[i];
+  const double tau = t - seg.t0;
+  if (tau <= 0.5 * seg.duration) {
+    return detail::advance(KinematicState{seg.p, seg.v, seg.a}, seg.j, tau);
+  }
+  // In the second half, evaluate back from the segment's end (the next segment's stored start,
+  // or the exact final state): rounding stays relative to the nearer boundary, so the profile
+  // approaches an exactly known end (v = 0 at a reversal, the target) without the drift of the
+  // segment's length.
+  const KinematicState end =
+      i + 1 < count_ ? KinematicState{segments_[i + 1].p, segments_[i + 1].v, segments_[i + 1].a}
+                     : final_;
+  const double t_end = i + 1 < count_ ? segments_[i + 1].t0 : duration_;
+  return detail::advance(end, seg.j, std::min(t - t_end, 0.0));
+}
+
+double Profile::jerk_at(double t) const noexcept {
+  if (count_ == 0 || t < 0.0 || t >= duration_) return 0.0;
+  std::size_t i = count_ - 1;
+  while (i > 0 && segments_[i].t0 > t)
+    --i;
+  return segments_[i].j;
+}
+
+}  // namespace nc

@@ -1,0 +1,52 @@
+// plan_velocity and plan_stop: one velocity change (profile/velocity_change.hpp) each.
+#include <cmath>
+
+#include "nc_core/profile.hpp"
+#include "profile/validate.hpp"
+#include "profile/velocity_change.hpp"
+
+namespace nc {
+namespace {
+
+Profile build_change(const KinematicState& start, double v1, const detail::Bounds& bounds,
+                     bool holds) noexcept {
+  detail::Piece pieces[detail::kMaxChangePieces];
+  const int n = detail::velocity_change(start.v, start.a, v1, bounds, pieces);
+  if (n < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
+  Profile profile;
+  profile.reset(start);
+  for (int i = 0; i < n; ++i)
+    profile.append(pieces[i].t, pieces[i].j, pieces[i].a_end, pieces[i].v_end);
+  const KinematicState end{profile.end_state().p, v1, 0.0};
+  profile.close(&end, holds);
+  if (!detail::profile_finite(profile)) return Profile::failure(ErrorCode::kPlannerNoSolution);
+  return profile;
+}
+
+}  // namespace
+
+Profile plan_velocity(const KinematicState& start, double velocity, const Limits& limits) noexcept {
+  ErrorCode e = detail::check_state(start);
+  if (e == ErrorCode::kNone) e = detail::check_limits(limits);
+  if (e == ErrorCode::kNone && !std::isfinite(velocity)) e = ErrorCode::kParameterNotFinite;
+  if (e == ErrorCode::kNone && std::abs(velocity) > limits.velocity) {
+    e = ErrorCode::kVelocityNotAllowed;
+  }
+  if (e != ErrorCode::kNone) return Profile::failure(e);
+  return build_change(start, velocity, {limits.acceleration, limits.deceleration, limits.jerk},
+                      true);
+}
+
+Profile plan_stop(const KinematicState& start, double deceleration, double jerk) noexcept {
+  ErrorCode e = detail::check_state(start);
+  if (e == ErrorCode::kNone) {
+    e = detail::check_positive(deceleration, ErrorCode::kDecelerationNotAllowed);
+  }
+  if (e == ErrorCode::kNone) e = detail::check_positive(jerk, ErrorCode::kJerkNotAllowed);
+  if (e != ErrorCode::kNone) return Profile::failure(e);
+  // A stop only lets |v| grow where an overshoot through v = 0 cannot be avoided; the
+  // deceleration bounds |a| there as well.
+  return build_change(start, 0.0, {deceleration, deceleration, jerk}, false);
+}
+
+}  // namespace nc

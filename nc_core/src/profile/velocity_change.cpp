@@ -1,0 +1,144 @@
+// The time-optimal velocity change (seed 000 §2.1: phases of +J, constant acceleration, -J).
+//
+// Walking the envelope: for an upward change, a rises at +J from a0 until it meets the highest
+// admissible acceleration at the current velocity, then follows it. That ceiling is
+//   - the path-relative bound: A- while v < 0 (|v| shrinks), A+ while v >= 0 (|v| grows);
+//   - before v crosses 0 upwards: a^2 + 2Jv <= A+^2, so that a is down to A+ when v reaches 0
+//     (only binding when A+ < A-);
+//   - the final ramp: a^2 + 2Jv <= 2J v1, so that a is 0 exactly when v reaches v1.
+// Both curves are -J arcs (a^2 + 2Jv is constant along -J), so following them means jerk -J,
+// following a bound means jerk 0. Downward changes are the mirror image (v, a -> -v, -a), which
+// the path-relative bounds are symmetric under.
+#include "profile/velocity_change.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace nc::detail {
+namespace {
+
+constexpr double kRel = 1e-13;  // relative tolerance of the mode decisions
+
+int upward(double v, double a, double v1, const Bounds& b, Piece* out) noexcept {
+  const double jerk = b.j;
+  const double kf = 2.0 * jerk * v1;
+  const bool cross = v1 > 0.0;
+  const double kc = cross ? std::min(kf, b.ap * b.ap) : kf;
+  // Scales of the problem itself (not of the bounds, which may be far larger than needed).
+  const double v_scale = std::max({std::abs(v1), std::abs(v), a * a / jerk});
+  const double tol_v = kRel * v_scale;
+  const double tol_a = kRel * std::sqrt(jerk * v_scale);
+  int n = 0;
+  // Appends a piece and moves the walk's state to its (exactly known) end.
+  auto put = [&](double t, double j, double a_end, double v_end, bool v_exact) {
+    if (t > 0.0) out[n++] = Piece{t, j, a_end, v_exact ? v_end : NAN};
+    a = a_end;
+    v = v_end;
+  };
+  for (int iter = 0; iter < kMaxChangePieces; ++iter) {
+    const bool neg = v < 0.0 || (v == 0.0 && a < 0.0);
+    if ((!neg || !cross) && std::abs(a) <= tol_a && v >= v1 - tol_v) return n;
+    const double cap = neg ? b.am : b.ap;
+    const double k = neg ? kc : kf;
+    const double k_now = a * a + 2.0 * jerk * v;
+    const double k_tol = kRel * (std::abs(k) + a * a + 2.0 * jerk * std::abs(v));
+
+    if (a > cap * (1.0 + kRel)) {
+      // Above the bound: back to it at -J (in v < 0 the bound may change at v = 0 first).
+      const double t_cap = (a - cap) / jerk;
+      if (neg && k_now >= 0.0) {
+        const double sq = std::sqrt(k_now);
+        const double t_zero = -2.0 * v / (a + sq);
+        if (t_zero < t_cap) {
+          put(t_zero, -jerk, sq, 0.0, true);
+          continue;
+        }
+      }
+      put(t_cap, -jerk, cap, v + t_cap * (a - 0.5 * jerk * t_cap), false);
+      continue;
+    }
+    if (a > 0.0 && k_now >= k - k_tol) {
+      // On a -J curve: the final ramp, or the ramp down to A+ before v = 0.
+      if (!neg || !cross) {
+        put(a / jerk, -jerk, 0.0, v1, true);
+        return n;
+      }
+      const double sq = std::sqrt(std::max(k_now, 0.0));
+      put(-2.0 * v / (a + sq), -jerk, sq, 0.0, true);
+      continue;
+    }
+    if (a >= cap * (1.0 - kRel)) {
+      // At the bound: hold it until the -J curve is met (or v reaches 0).
+      a = cap;
+      const double v_curve = (k - cap * cap) / (2.0 * jerk);
+      const double t_curve = std::max((v_curve - v) / cap, 0.0);
+      if (neg) {
+        const double t_zero = -v / cap;
+        if (t_zero < t_curve) {
+          put(t_zero, 0.0, cap, 0.0, true);
+          continue;
+        }
+      }
+      put(t_curve, 0.0, cap, std::max(v_curve, v), false);
+      continue;
+    }
+    // Below the ceiling: rise at +J until the bound, the curve, or a change of the bound at v = 0.
+    const double t_cap = (cap - a) / jerk;
+    const double r = a * a - 2.0 * jerk * v;  // constant along +J
+    const double a_meet = std::sqrt(std::max(0.5 * (r + k), 0.0));
+    const double t_curve = std::max((a_meet - a) / jerk, 0.0);
+    double t_zero = INFINITY;
+    if (neg) {
+      const double sq = std::sqrt(std::max(r, 0.0));
+      t_zero = a >= 0.0 ? -2.0 * v / (a + sq) : (sq - a) / jerk;
+    } else if (a < 0.0 && r >= 0.0) {
+      t_zero = 2.0 * v / (std::sqrt(r) - a);
+    }
+    const double t_event = std::min(t_cap, t_curve);
+    if (t_zero < t_event * (1.0 - kRel)) {
+      put(t_zero, jerk, a + jerk * t_zero, 0.0, true);
+      continue;
+    }
+    if (t_curve <= t_cap) {
+      if (!(a_meet > 0.0)) {
+        // Meets the final curve at a = 0: that is the end velocity itself.
+        put(t_curve, jerk, 0.0, v1, true);
+        return n;
+      }
+      put(t_curve, jerk, a_meet, (k - a_meet * a_meet) / (2.0 * jerk), false);
+      continue;
+    }
+    put(t_cap, jerk, cap, v + t_cap * (a + 0.5 * jerk * t_cap), false);
+  }
+  return -1;
+}
+
+}  // namespace
+
+int velocity_change(double v0, double a0, double v1, const Bounds& bounds, Piece* out) noexcept {
+  if (v1 >= natural_velocity(v0, a0, bounds.j)) return upward(v0, a0, v1, bounds, out);
+  const int n = upward(-v0, -a0, -v1, bounds, out);
+  for (int i = 0; i < n; ++i) {
+    out[i].j = -out[i].j;
+    out[i].a_end = -out[i].a_end;
+    out[i].v_end = -out[i].v_end;
+  }
+  return n;
+}
+
+double pieces_distance(double v0, double a0, const Piece* pieces, int count) noexcept {
+  KinematicState s{0.0, v0, a0};
+  // Integrated exactly as Profile::append does (same snapping), so that a root found on these
+  // distances is a root of the profile that is built.
+  for (int i = 0; i < count; ++i)
+    s = advance(s, pieces[i]);
+  return s.p;
+}
+
+double stop_distance(double v, double a, const Bounds& bounds) noexcept {
+  Piece pieces[kMaxChangePieces];
+  const int n = velocity_change(v, a, 0.0, bounds, pieces);
+  return n < 0 ? 0.0 : pieces_distance(v, a, pieces, n);
+}
+
+}  // namespace nc::detail

@@ -1,0 +1,32 @@
+// Step 1 of every plan: the time-optimal change from a state (v0, a0) to a velocity v1 with
+// a = 0 (internal). plan_velocity is this step plus a hold; plan_stop is it with v1 = 0;
+// plan_position uses it for the push towards ±V and for the stop at the target.
+#pragma once
+
+#include "profile/kinematics.hpp"
+
+namespace nc::detail {
+
+// At most this many pieces: bring a back under its bound, rise, hold, ramp down before v = 0
+// (A+ < A-), hold, rise again after v = 0 (A- < A+), hold, final ramp — plus slack.
+inline constexpr int kMaxChangePieces = 10;
+
+// The velocity at which a reaches 0 when it is brought there with maximum jerk.
+inline double natural_velocity(double v, double a, double jerk) noexcept {
+  return v + a * (a < 0.0 ? -a : a) / (2.0 * jerk);
+}
+
+// Writes the pieces of the time-optimal change (v0, a0) -> (v1, 0) to `out` (capacity
+// kMaxChangePieces) and returns their number, or -1 if the walk did not close (never expected).
+// Time-optimal: at every instant a is as large towards the needed sign as the path-relative
+// bounds, the bound change at v = 0 and the final ramp allow. Start values outside the bounds are
+// brought back at maximum jerk; the end velocity is never over- or undershot.
+int velocity_change(double v0, double a0, double v1, const Bounds& bounds, Piece* out) noexcept;
+
+// Distance travelled along `pieces` from velocity v0 and acceleration a0.
+double pieces_distance(double v0, double a0, const Piece* pieces, int count) noexcept;
+
+// Distance of the shortest stop (time-optimal change to v = 0, a = 0) from (v, a).
+double stop_distance(double v, double a, const Bounds& bounds) noexcept;
+
+}  // namespace nc::detail
