@@ -66,10 +66,7 @@ void ServoAxis::check_enables() noexcept {
 void ServoAxis::generate_set_values() noexcept {
   previous_set_position_ = set_.p;
   if (!controller_enabled()) {
-    // TwinCAT: without controller enable the set position follows the actual position.
-    set_ = KinematicState{drive_.measured_position(), 0.0, 0.0};
-    set_jerk_ = 0.0;
-    target_ = set_.p;
+    set_jerk_ = 0.0;  // no generation: control_and_drive() makes the set position follow
     return;
   }
   if (job_.active()) {
@@ -88,9 +85,17 @@ void ServoAxis::control_and_drive() noexcept {
     drive_.follow(set_.p, set_.v, set_.a);
     return;
   }
+  if (!controller_enabled()) {
+    // TwinCAT: without controller enable the drive is off and the set position follows the
+    // actual position, so there is no following error to jump at when the enable returns.
+    drive_.step(0.0, false);
+    set_ = KinematicState{drive_.measured_position(), 0.0, 0.0};
+    target_ = set_.p;
+    return;
+  }
   const double command =
       controller_.command(previous_set_position_, set_.p, drive_.measured_position(), cycle_time_);
-  drive_.step(command, controller_enabled());
+  drive_.step(command, true);
 }
 
 void ServoAxis::run_monitors() noexcept {
