@@ -33,12 +33,14 @@ Profile finish(const KinematicState& start, double target, double dir, const Pie
   for (int i = 0; i < n_head; ++i) {
     profile.append(head[i].t, dir * head[i].j, dir * head[i].a_end, dir * head[i].v_end);
   }
+  const std::size_t tail_start = profile.segment_count();
   profile.append(cruise, 0.0);
   for (int i = 0; i < n_tail; ++i) {
     profile.append(tail[i].t, dir * tail[i].j, dir * tail[i].a_end, dir * tail[i].v_end);
   }
   const KinematicState end{target, 0.0, 0.0};
   profile.close(&end);
+  profile.anchor_to_end(tail_start);
   if (!detail::profile_finite(profile)) return Profile::failure(ErrorCode::kPlannerNoSolution);
   return profile;
 }

@@ -51,6 +51,15 @@ void Profile::close(const KinematicState* exact_end, bool holds_velocity) noexce
   holds_velocity_ = holds_velocity;
 }
 
+void Profile::anchor_to_end(std::size_t first) noexcept {
+  double next_p = final_.p;
+  for (std::size_t i = count_; i > first; --i) {
+    Segment& seg = segments_[i - 1];
+    seg.p = next_p - detail::advance(KinematicState{0.0, seg.v, seg.a}, seg.j, seg.duration).p;
+    next_p = seg.p;
+  }
+}
+
 KinematicState Profile::at(double t) const noexcept {
   if (t >= duration_) {
     if (!holds_velocity_) return final_;

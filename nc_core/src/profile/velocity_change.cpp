@@ -40,7 +40,12 @@ int upward(double v, double a, double v1, const Bounds& b, Piece* out) noexcept 
     if ((!neg || !cross) && std::abs(a) <= tol_a && v >= v1 - tol_v) return n;
     const double cap = neg ? b.am : b.ap;
     const double k = neg ? kc : kf;
+    // The curve's a reaches 0 at vk (k = 2J vk); differences to it are taken in v, where they
+    // are exact for close values, not in a^2 + 2Jv, which cancels.
+    const bool final_curve = !neg || !cross || kc == kf;
+    const double vk = final_curve ? v1 : kc / (2.0 * jerk);
     const double k_now = a * a + 2.0 * jerk * v;
+    const double excess = a * a + 2.0 * jerk * (v - vk);  // k_now - k
     const double k_tol = kRel * (std::abs(k) + a * a + 2.0 * jerk * std::abs(v));
 
     if (a > cap * (1.0 + kRel)) {
@@ -57,20 +62,23 @@ int upward(double v, double a, double v1, const Bounds& b, Piece* out) noexcept 
       put(t_cap, -jerk, cap, v + t_cap * (a - 0.5 * jerk * t_cap), false);
       continue;
     }
-    if (a > 0.0 && k_now >= k - k_tol) {
+    if (a > 0.0 && excess >= -k_tol) {
       // On a -J curve: the final ramp, or the ramp down to A+ before v = 0.
       if (!neg || !cross) {
         put(a / jerk, -jerk, 0.0, v1, true);
         return n;
       }
-      const double sq = std::sqrt(std::max(k_now, 0.0));
-      put(-2.0 * v / (a + sq), -jerk, sq, 0.0, true);
+      // The arc's constant is the curve's (k), known exactly; k_now = a^2 + 2Jv would cancel
+      // badly when a^2 >> k. Only a start above the curve (a violation that cannot be avoided)
+      // keeps its own constant.
+      const double sq = std::sqrt(std::max(excess > k_tol ? k_now : k, 0.0));
+      put((a - sq) / jerk, -jerk, sq, 0.0, true);
       continue;
     }
     if (a >= cap * (1.0 - kRel)) {
       // At the bound: hold it until the -J curve is met (or v reaches 0).
       a = cap;
-      const double v_curve = (k - cap * cap) / (2.0 * jerk);
+      const double v_curve = vk - cap * cap / (2.0 * jerk);
       const double t_curve = std::max((v_curve - v) / cap, 0.0);
       if (neg) {
         const double t_zero = -v / cap;
@@ -85,7 +93,10 @@ int upward(double v, double a, double v1, const Bounds& b, Piece* out) noexcept 
     // Below the ceiling: rise at +J until the bound, the curve, or a change of the bound at v = 0.
     const double t_cap = (cap - a) / jerk;
     const double r = a * a - 2.0 * jerk * v;  // constant along +J
-    const double a_meet = std::sqrt(std::max(0.5 * (r + k), 0.0));
+    const double meet2 = 0.5 * (a * a - 2.0 * jerk * (v - vk));
+    // Within rounding of the final curve (v_nat = v1) the rise ends at a = 0 exactly: the
+    // remaining time must not jump with the square root of the rounding.
+    const double a_meet = final_curve && meet2 <= k_tol ? 0.0 : std::sqrt(std::max(meet2, 0.0));
     const double t_curve = std::max((a_meet - a) / jerk, 0.0);
     double t_zero = INFINITY;
     if (neg) {
@@ -105,7 +116,7 @@ int upward(double v, double a, double v1, const Bounds& b, Piece* out) noexcept 
         put(t_curve, jerk, 0.0, v1, true);
         return n;
       }
-      put(t_curve, jerk, a_meet, (k - a_meet * a_meet) / (2.0 * jerk), false);
+      put(t_curve, jerk, a_meet, vk - a_meet * a_meet / (2.0 * jerk), false);
       continue;
     }
     put(t_cap, jerk, cap, v + t_cap * (a + 0.5 * jerk * t_cap), false);
