@@ -4,7 +4,9 @@
 // too slow somewhere is caught where re-planning finds a shorter way (T' < T - t); one that cuts
 // corners is caught where the re-plan cannot keep its earlier promise (T' > T - t).
 // Random problems include arbitrary feasible starts (so reversals), asymmetric limits and every
-// segment boundary as a re-planning time; tolerance 1e-7 of T.
+// segment boundary as a re-planning time; tolerance 1e-7 of T, strictly for starts at p = 0 and
+// for velocity and stop profiles. Far from p = 0 a miss the rounding of the sampled state
+// explains is counted ("ill-conditioned") but not failed — see the second test.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -48,6 +50,7 @@ struct Summary {
   long ill_conditioned = 0;  // misses explained by the rounding of the sampled state
   double worst = 0.0;        // largest |T' - (T - t)| / T (ill-conditioned ones excluded)
   double worst_ill = 0.0;    // the same over the ill-conditioned ones
+  std::string worst_ill_example;
   std::vector<std::string> examples;
 
   void print(const char* name, uint64_t seed) const {
@@ -57,6 +60,8 @@ struct Summary {
         "rounding, worst %.3g)\n",
         name, static_cast<unsigned long long>(seed), problems, replans, failures, longer, shorter,
         worst, ill_conditioned, worst_ill);
+    if (!worst_ill_example.empty())
+      std::printf("  worst ill-conditioned: %s\n", worst_ill_example.c_str());
     for (const std::string& s : examples)
       std::printf("  %s\n", s.c_str());
     std::fflush(stdout);
@@ -103,8 +108,8 @@ KinematicState state_uncertainty(const Profile& prof, double target, double t) {
 // outside the range of re-plan times over those states as well: a miss the rounding of x
 // explains is "ill-conditioned", counted and printed, not a failure.
 template <typename Replan, typename Describe>
-void compare(Summary& sum, const Profile& prof, double target, double t, const KinematicState& x,
-             Replan replan, Describe describe) {
+void compare(Summary& sum, bool rounding_aware, const Profile& prof, double target, double t,
+             const KinematicState& x, Replan replan, Describe describe) {
   ++sum.replans;
   const double T = prof.duration();
   const double expected = T - t;
@@ -116,7 +121,7 @@ void compare(Summary& sum, const Profile& prof, double target, double t, const K
     sum.worst = std::max(sum.worst, err);
     return;
   }
-  if (ok2) {
+  if (ok2 && rounding_aware) {
     const KinematicState d = state_uncertainty(prof, target, t);
     double lo = T2;
     double hi = T2;
@@ -134,7 +139,15 @@ void compare(Summary& sum, const Profile& prof, double target, double t, const K
     }
     if (all_ok && expected >= lo - kRelative * T && expected <= hi + kRelative * T) {
       ++sum.ill_conditioned;
-      sum.worst_ill = std::max(sum.worst_ill, err);
+      if (err > sum.worst_ill) {
+        sum.worst_ill = err;
+        char buf[360];
+        std::snprintf(buf, sizeof buf,
+                      "\n    -> at t=%.17g state {p=%.17g, v=%.17g, a=%.17g}: T'=%.17g, T-t=%.17g "
+                      "(T=%.17g), re-plans from the state +-(%.3g, %.3g, %.3g): %.17g ... %.17g",
+                      t, x.p, x.v, x.a, T2, expected, T, d.p, d.v, d.a, lo, hi);
+        sum.worst_ill_example = describe() + buf;
+      }
       return;
     }
   }
@@ -154,13 +167,19 @@ void compare(Summary& sum, const Profile& prof, double target, double t, const K
 
 }  // namespace
 
-TEST_CASE("re-planning a position profile from its state at any time gives the rest of it",
-          "[profile][bellman]") {
-  const uint64_t seed = profile_problems::suite_seed(0xBE11A4ull);
+namespace {
+
+// Position Bellman over random problems. `offset_starts`: keep the problems' start positions (up
+// to 1e5 mm, for moves down to 1e-6 mm); otherwise every problem is moved to start at p = 0.
+Summary position_bellman(uint64_t seed, bool offset_starts) {
   Rng rng(seed);
   Summary sum;
   for (long k = 0; k < kPositionProblems; ++k) {
-    const profile_problems::Problem pr = profile_problems::random_position_problem(rng, 0.3);
+    profile_problems::Problem pr = profile_problems::random_position_problem(rng, 0.3);
+    if (!offset_starts) {
+      pr.target -= pr.start.p;
+      pr.start.p = 0.0;
+    }
     const Profile prof = nc::plan_position(pr.start, pr.target, pr.limits);
     ++sum.problems;
     if (!prof.ok() || !(prof.duration() > 0.0)) {
@@ -169,7 +188,7 @@ TEST_CASE("re-planning a position profile from its state at any time gives the r
     }
     for (double t : replan_times(prof, rng)) {
       compare(
-          sum, prof, pr.target, t, prof.at(t),
+          sum, offset_starts, prof, pr.target, t, prof.at(t),
           [&](const KinematicState& y) { return nc::plan_position(y, pr.target, pr.limits); },
           [&] {
             return profile_checks::describe_problem("plan_position", pr.start, pr.target,
@@ -177,7 +196,33 @@ TEST_CASE("re-planning a position profile from its state at any time gives the r
           });
     }
   }
+  return sum;
+}
+
+}  // namespace
+
+TEST_CASE("re-planning a position profile from its state at any time gives the rest of it",
+          "[profile][bellman]") {
+  // Strict: every re-plan within 1e-7·T. Start positions at 0 so that the sampled positions
+  // carry rounding relative to the move itself.
+  const uint64_t seed = profile_problems::suite_seed(0xBE11A4ull);
+  const Summary sum = position_bellman(seed, false);
   sum.print("plan_position Bellman", seed);
+  CHECK(sum.failures == 0);
+  CHECK(sum.ill_conditioned == 0);
+}
+
+TEST_CASE(
+    "far from 0, re-planning gives the rest of the profile within the rounding of the "
+    "sampled state",
+    "[profile][bellman]") {
+  // A 1e-6 mm move at p = 1e5 mm spans only ~1e5 ulp of p: at(t) is rounded to a noticeable part
+  // of the move, and near a final ramp the optimal time goes with the cube root of such an
+  // offset. A miss counts unless re-planning from the state moved by its rounding uncertainty
+  // brackets T - t.
+  const uint64_t seed = profile_problems::suite_seed(0xBE11A4ull);
+  const Summary sum = position_bellman(seed, true);
+  sum.print("plan_position Bellman, offset starts", seed);
   CHECK(sum.failures == 0);
 }
 
@@ -200,7 +245,7 @@ TEST_CASE("re-planning a velocity profile from its state at any time gives the r
     if (!(T > 0.0)) continue;
     for (double t : replan_times(prof, rng)) {
       compare(
-          sum, prof, 0.0, t, prof.at(t),
+          sum, false, prof, 0.0, t, prof.at(t),
           [&](const KinematicState& y) { return nc::plan_velocity(y, v_target, l); },
           [&] {
             char buf[64];
@@ -231,7 +276,7 @@ TEST_CASE("re-planning a stop from its state at any time gives the rest of it",
     if (!(T > 0.0)) continue;
     for (double t : replan_times(prof, rng)) {
       compare(
-          sum, prof, 0.0, t, prof.at(t),
+          sum, false, prof, 0.0, t, prof.at(t),
           [&](const KinematicState& y) { return nc::plan_stop(y, l.deceleration, l.jerk); },
           [&] { return profile_checks::describe_problem("plan_stop", start, 0.0, l); });
     }
