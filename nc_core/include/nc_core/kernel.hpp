@@ -17,16 +17,43 @@
 // Choices (documented here because users see their effects):
 // - Homed (StateDWord bit 1) is set from the start: there is no homing yet.
 // - Operational (bit 0) = controller enable present and the axis not in error.
+// - AxisState, in this priority: ErrorStop (error), Disabled (no controller enable), Stopping
+//   (MC_Stop running or its lock held, or an error ramp still running after a reset),
+//   DiscreteMotion (positioning or halt until done), ContinuousMotion (MoveVelocity), Standstill.
 // - A start (absolute, relative, velocity) begins from the axis's current SET state (p, v, a),
 //   so an aborting command blends without a jump (seed 000 §2.1; TwinCAT does the same).
+//   MoveRelative adds its distance to the current set position.
+// - Validation order of a start (the first broken rule gives the code): axis in error
+//   (kAxisInErrorState), locked (0x42EF), buffer mode other than aborting
+//   (kBufferModeNotSupported), position not finite (kPositionNotFinite), other parameter not finite
+//   (kParameterNotFinite), V <= 0 (0x4231), V above max or reference velocity (0x4221), A+ / A- / J
+//   < 0 (0x422F / 0x4230 / 0x422E; 0 = axis default), direction (kDirectionInvalid), target outside
+//   the enabled software limits (0x4222; MoveVelocity standing on or beyond a limit and running
+//   outward: 0x4461 / 0x4460), controller or feed enable for the direction missing (0x4223).
+// - MoveVelocity's direction: +1 or MC_Positive_Direction (1) forward; -1 or
+//   MC_Negative_Direction (3) backward; anything else (MC_Current_Direction, …) is refused.
 // - A positioning start at standstill shorter than one encoder increment (or of length 0) does
 //   not start: the command is answered kDone at once, NcToPlc.Warning = 0x4224, and nothing else
 //   changes (a job still waiting for its target window keeps running) — seed 000 §2.1.
-// - MoveRelative adds its distance to the current set position.
-// - Reset clears the axis error. When the set values are at rest the set position is moved to
-//   the actual position (the axis holds where it stands, with no following error left); an error
-//   ramp still running finishes first.
+// - Halt and Stop: deceleration / jerk 0 = those of the running motion, or the axis defaults at
+//   standstill. Both need the controller enable (0x4223) and are refused on an axis in error.
+//   Halt is a motion command (locked out by a Stop); a Stop may replace a Stop.
+// - Job ends: positioning kDone when set-value generation has ended and InTargetPosition (or the
+//   target window is off); Halt/Stop kDone when the set velocity is 0; MoveVelocity kReached.
+// - Axis errors (A6): following error 0x4550; set position passing an enabled software limit
+//   outward during a job 0x4463 / 0x4462; feed enable removed in the direction of travel 0x4358 /
+//   0x4357 — each stops on the emergency ramp. Controller enable removed during a job: 0x4356
+//   and, the drive being off, no ramp. The first error is kept until Reset.
+// - Without controller enable the drive is off and the set position follows the actual one.
+// - Reset clears the axis error (and the warning) but not the MC_Stop lock. When the set values
+//   are at rest the set position is moved to the actual position (the axis holds where it
+//   stands, with no following error left); an error ramp still running finishes first.
+// - Window and filter times count samples, each worth one NC cycle: the following error is
+//   raised once it has been above the limit for more samples than fit in the filter time;
+//   InTargetPosition once the window has held for window-time's worth of samples (at least 1).
 // - Override (PlcToNc.Override) is read into the job every cycle but not yet applied (issue 4).
+//   Modulo starts, online changes, compensation, coupling, external setpoints and homing are
+//   refused with kUnknownCommand until their issues land.
 #pragma once
 
 #include <cstddef>
