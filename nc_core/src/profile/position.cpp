@@ -15,6 +15,7 @@
 #include <cmath>
 
 #include "nc_core/profile.hpp"
+#include "profile/rest_to_rest.hpp"
 #include "profile/root.hpp"
 #include "profile/validate.hpp"
 #include "profile/velocity_change.hpp"
@@ -55,6 +56,14 @@ Profile plan_position(const KinematicState& start, double target, const Limits& 
 
   const Bounds bounds{limits.acceleration, limits.deceleration, limits.jerk};
   const double distance = target - start.p;
+
+  if (start.v == 0.0 && start.a == 0.0) {
+    // From rest: the same profile in closed form.
+    Piece pieces[7];
+    int n_up = 0;
+    const int n = detail::rest_to_rest(distance, limits.velocity, bounds, pieces, n_up);
+    return finish(start, target, 1.0, pieces, n_up, 0.0, pieces + n_up, n - n_up);
+  }
 
   Piece stop[detail::kMaxChangePieces];
   int n_stop = detail::velocity_change(start.v, start.a, 0.0, bounds, stop);

@@ -52,6 +52,8 @@ void Profile::close(const KinematicState* exact_end, bool holds_velocity) noexce
 }
 
 void Profile::anchor_to_end(std::size_t first) noexcept {
+  // The first segment keeps the start state itself.
+  if (first == 0) first = 1;
   double next_p = final_.p;
   for (std::size_t i = count_; i > first; --i) {
     Segment& seg = segments_[i - 1];

@@ -124,9 +124,53 @@ int upward(double v, double a, double v1, const Bounds& b, Piece* out) noexcept 
   return -1;
 }
 
+// The stop (v1 = 0) in closed form: no bound changes at v = 0 matter (a stop never crosses
+// v = 0 with a towards the bound that grows), so it is rise / hold at A- / fall, after bringing a
+// back under A- if needed. The hot path of plan_position's root finding.
+int stop_change(double v, double a, const Bounds& b, Piece* out) noexcept {
+  const double jerk = b.j;
+  const double am = b.am;
+  const double s = natural_velocity(v, a, jerk) > 0.0 ? -1.0 : 1.0;  // mirror to an upward stop
+  v *= s;
+  a *= s;
+  const double k_tol = kRel * (a * a + 2.0 * jerk * std::abs(v));
+  int n = 0;
+  auto put = [&](double t, double j, double a_end, double v_end) {
+    if (t > 0.0) out[n++] = Piece{t, s * j, s * a_end, s * v_end};
+  };
+  if (a > am * (1.0 + kRel)) {
+    const double t = (a - am) / jerk;
+    put(t, -jerk, am, NAN);
+    v += t * (a - 0.5 * jerk * t);
+    a = am;
+  } else {
+    const double meet2 = 0.5 * (a * a - 2.0 * jerk * v);
+    if (meet2 <= k_tol) {
+      // On the final curve already (v_nat = 0 within rounding): a rises to 0 exactly at v = 0.
+      put(-a / jerk, jerk, 0.0, 0.0);
+      return n;
+    }
+    const double a_meet = std::sqrt(meet2);
+    if (a_meet <= am) {
+      put((a_meet - a) / jerk, jerk, a_meet, NAN);
+      put(a_meet / jerk, -jerk, 0.0, 0.0);
+      return n;
+    }
+    const double t = (am - a) / jerk;
+    put(t, jerk, am, NAN);
+    if (t > 0.0) v += t * (a + 0.5 * jerk * t);
+    a = am;
+  }
+  const double v_curve = -am * am / (2.0 * jerk);
+  put((v_curve - v) / am, 0.0, am, NAN);
+  put(am / jerk, -jerk, 0.0, 0.0);
+  return n;
+}
+
 }  // namespace
 
 int velocity_change(double v0, double a0, double v1, const Bounds& bounds, Piece* out) noexcept {
+  if (v1 == 0.0) return stop_change(v0, a0, bounds, out);
   if (v1 >= natural_velocity(v0, a0, bounds.j)) return upward(v0, a0, v1, bounds, out);
   const int n = upward(-v0, -a0, -v1, bounds, out);
   for (int i = 0; i < n; ++i) {

@@ -1,0 +1,90 @@
+// Rest to rest in closed form. Accelerating to a peak vp with bound A and jerk J takes
+// t(vp) = vp/A + A/J when vp >= A^2/J (the bound is reached) and 2 sqrt(vp/J) otherwise; both
+// halves are point-symmetric in velocity, so the distance up to vp and back is
+// D(vp) = vp/2 (t+(vp) + t-(vp)), increasing in vp. If D(V) is not more than the distance the
+// profile cruises at V; otherwise vp solves D(vp) = distance: a cube root when neither bound is
+// reached, a quadratic when both are, and a quartic in sqrt(vp) (by Newton) in between.
+#include "profile/rest_to_rest.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace nc::detail {
+namespace {
+
+double ramp_time(double vp, double bound, double jerk) noexcept {
+  return vp * jerk >= bound * bound ? vp / bound + bound / jerk : 2.0 * std::sqrt(vp / jerk);
+}
+
+double there_and_back(double vp, const Bounds& b) noexcept {
+  return 0.5 * vp * (ramp_time(vp, b.ap, b.j) + ramp_time(vp, b.am, b.j));
+}
+
+double peak_velocity(double distance, const Bounds& b) noexcept {
+  const double jerk = b.j;
+  const double low = std::min(b.ap, b.am);
+  const double high = std::max(b.ap, b.am);
+  const double v_low = low * low / jerk;     // below it, neither bound is reached
+  const double v_high = high * high / jerk;  // above it, both are
+  if (distance <= there_and_back(v_low, b)) {
+    return std::cbrt(0.25 * distance * distance * jerk);  // D = 2 vp^1.5 / sqrt(J)
+  }
+  if (distance >= there_and_back(v_high, b)) {
+    // D = vp^2 (1/A+ + 1/A-) / 2 + vp (A+ + A-) / (2J)
+    const double k = 1.0 / b.ap + 1.0 / b.am;
+    const double h = 0.5 * (b.ap + b.am) / jerk;
+    return 2.0 * distance / (h + std::sqrt(h * h + 2.0 * k * distance));
+  }
+  // Only the lower bound is reached: with u = sqrt(vp),
+  // f(u) = u^4 / (2 low) + u^3 / sqrt(J) + u^2 low / (2J) - distance, increasing and convex for
+  // u > 0, so Newton from the right of the root converges monotonically.
+  const double c4 = 0.5 / low, c3 = 1.0 / std::sqrt(jerk), c2 = 0.5 * low / jerk;
+  // Each term alone bounds the root from above; the smallest bound is within a small factor.
+  double u = std::min({std::sqrt(v_high), std::sqrt(std::sqrt(2.0 * low * distance)),
+                       std::cbrt(distance * std::sqrt(jerk)), std::sqrt(distance / c2)});
+  for (int i = 0; i < 60; ++i) {
+    const double u2 = u * u;
+    const double f = u2 * (u * (c4 * u + c3) + c2) - distance;
+    const double df = u * (u * (4.0 * c4 * u + 3.0 * c3) + 2.0 * c2);
+    const double next = u - f / df;
+    if (!(next < u)) break;
+    u = next;
+  }
+  return u * u;
+}
+
+// The pieces of a velocity ramp 0 -> vp (sign +1) or vp -> 0 (sign -1) with bound A.
+int ramp(double vp, double bound, double jerk, double sign, bool up, Piece* out) noexcept {
+  int n = 0;
+  const double v_start = up ? 0.0 : vp;
+  const double v_end = up ? vp : 0.0;
+  const double dir = up ? 1.0 : -1.0;  // sign of a during the ramp
+  if (vp * jerk >= bound * bound) {
+    const double t = bound / jerk;
+    out[n++] = Piece{t, sign * dir * jerk, sign * dir * bound, NAN};
+    out[n++] = Piece{(vp - bound * bound / jerk) / bound, 0.0, sign * dir * bound, NAN};
+    out[n++] = Piece{t, -sign * dir * jerk, 0.0, sign * v_end};
+  } else {
+    const double t = std::sqrt(vp / jerk);
+    out[n++] = Piece{t, sign * dir * jerk, sign * dir * jerk * t, sign * 0.5 * (v_start + v_end)};
+    out[n++] = Piece{t, -sign * dir * jerk, 0.0, sign * v_end};
+  }
+  return n;
+}
+
+}  // namespace
+
+int rest_to_rest(double distance, double velocity, const Bounds& bounds, Piece* out,
+                 int& n_up) noexcept {
+  const double sign = distance < 0.0 ? -1.0 : 1.0;
+  const double d = std::abs(distance);
+  const double d_max = there_and_back(velocity, bounds);
+  const double vp = d >= d_max ? velocity : std::min(peak_velocity(d, bounds), velocity);
+  int n = ramp(vp, bounds.ap, bounds.j, sign, true, out);
+  n_up = n;
+  if (d > d_max) out[n++] = Piece{(d - d_max) / velocity, 0.0, 0.0, sign * velocity};
+  n += ramp(vp, bounds.am, bounds.j, sign, false, out + n);
+  return n;
+}
+
+}  // namespace nc::detail

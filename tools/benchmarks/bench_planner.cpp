@@ -1,0 +1,154 @@
+// Planner speed over fixed random problem sets (issue 3): rest to rest, any feasible state to
+// rest, and velocity changes, with distances 1e-6…1e5 mm, V 1e-2…1e5 mm/s, A 1e-1…1e7 mm/s²,
+// J 1…1e9 mm/s³ (log-uniform). Besides Google Benchmark's mean time per plan, each benchmark
+// reports the median and the 99th percentile over the set (counters median_ns, p99_ns): every
+// problem is timed alone, as the mean of a few repeated plans.
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "nc_core/profile.hpp"
+
+namespace {
+
+constexpr std::uint64_t kSeed = 20240503;
+constexpr std::size_t kSetSize = 4096;
+
+struct Problem {
+  nc::KinematicState start;
+  double target = 0.0;  // position, or velocity for the velocity set
+  nc::Limits limits;
+};
+
+class Draw {
+ public:
+  explicit Draw(std::uint64_t seed) : rng_(seed) {}
+  double uniform(double lo, double hi) {
+    return std::uniform_real_distribution<double>(lo, hi)(rng_);
+  }
+  double log_uniform(double lo, double hi) { return std::exp(uniform(std::log(lo), std::log(hi))); }
+  double sign() { return uniform(0.0, 1.0) < 0.5 ? -1.0 : 1.0; }
+  nc::Limits limits() {
+    nc::Limits l;
+    l.velocity = log_uniform(1e-2, 1e5);
+    l.acceleration = log_uniform(1e-1, 1e7);
+    l.deceleration = log_uniform(1e-1, 1e7);
+    l.jerk = log_uniform(1.0, 1e9);
+    return l;
+  }
+  double distance() { return sign() * log_uniform(1e-6, 1e5); }
+  // A feasible moving state: one taken from another time-optimal profile with the same limits.
+  nc::KinematicState moving_state(const nc::Limits& l) {
+    const double d = distance();
+    const nc::Profile other = nc::plan_position({-d * uniform(0.0, 1.0), 0.0, 0.0}, d, l);
+    nc::KinematicState s = other.at(uniform(0.0, other.duration()));
+    s.p = 0.0;
+    return s;
+  }
+
+ private:
+  std::mt19937_64 rng_;
+};
+
+const std::vector<Problem>& rest_set() {
+  static const std::vector<Problem> set = [] {
+    Draw draw(kSeed);
+    std::vector<Problem> v(kSetSize);
+    for (Problem& q : v) {
+      q.limits = draw.limits();
+      q.target = draw.distance();
+    }
+    return v;
+  }();
+  return set;
+}
+
+const std::vector<Problem>& state_set() {
+  static const std::vector<Problem> set = [] {
+    Draw draw(kSeed + 1);
+    std::vector<Problem> v(kSetSize);
+    for (Problem& q : v) {
+      q.limits = draw.limits();
+      q.start = draw.moving_state(q.limits);
+      q.target = draw.distance();
+    }
+    return v;
+  }();
+  return set;
+}
+
+const std::vector<Problem>& velocity_set() {
+  static const std::vector<Problem> set = [] {
+    Draw draw(kSeed + 2);
+    std::vector<Problem> v(kSetSize);
+    for (Problem& q : v) {
+      q.limits = draw.limits();
+      q.start = draw.moving_state(q.limits);
+      q.target = draw.uniform(-1.0, 1.0) * q.limits.velocity;
+    }
+    return v;
+  }();
+  return set;
+}
+
+nc::Profile plan_position(const Problem& q) {
+  return nc::plan_position(q.start, q.target, q.limits);
+}
+nc::Profile plan_velocity(const Problem& q) {
+  return nc::plan_velocity(q.start, q.target, q.limits);
+}
+
+// Times every problem alone (mean of kRepeat plans) and reports median and p99 in ns.
+template <class Plan>
+void report_distribution(benchmark::State& state, const std::vector<Problem>& set, Plan plan) {
+  constexpr int kRepeat = 16;
+  std::vector<double> ns;
+  ns.reserve(set.size());
+  for (const Problem& q : set) {
+    const auto t0 = std::chrono::steady_clock::now();
+    for (int r = 0; r < kRepeat; ++r) {
+      nc::Profile p = plan(q);
+      benchmark::DoNotOptimize(p);
+    }
+    const auto t1 = std::chrono::steady_clock::now();
+    ns.push_back(std::chrono::duration<double, std::nano>(t1 - t0).count() / kRepeat);
+  }
+  std::sort(ns.begin(), ns.end());
+  state.counters["median_ns"] = ns[ns.size() / 2];
+  state.counters["p99_ns"] = ns[ns.size() * 99 / 100];
+  state.counters["max_ns"] = ns.back();
+}
+
+template <class Plan>
+void run(benchmark::State& state, const std::vector<Problem>& set, Plan plan) {
+  std::size_t i = 0;
+  for (auto _ : state) {
+    nc::Profile p = plan(set[i]);
+    benchmark::DoNotOptimize(p);
+    if (++i == set.size()) i = 0;
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
+  report_distribution(state, set, plan);
+}
+
+void BM_PlanPositionRestToRest(benchmark::State& state) {
+  run(state, rest_set(), plan_position);
+}
+void BM_PlanPositionFromAnyState(benchmark::State& state) {
+  run(state, state_set(), plan_position);
+}
+void BM_PlanVelocity(benchmark::State& state) {
+  run(state, velocity_set(), plan_velocity);
+}
+
+}  // namespace
+
+BENCHMARK(BM_PlanPositionRestToRest);
+BENCHMARK(BM_PlanPositionFromAnyState);
+BENCHMARK(BM_PlanVelocity);
+BENCHMARK_MAIN();
