@@ -157,6 +157,25 @@ TEST_CASE("Stop locks motion commands until StopRelease; Halt is locked out too"
   CHECK_FALSE(kt::bit(*h.x, plc::kStateHasBeenStopped));
 }
 
+TEST_CASE("Reset cancels the MC_Stop lock (Tc2_MC2 MC_Reset)", "[kernel][answers][stop]") {
+  kt::Harness h;
+  h.post(kt::move_velocity(1000.0, 1));
+  h.cycles(400);
+  const uint16_t stop = h.post(kt::simple(CommandType::kStop));
+  REQUIRE(h.cycles_until([&] { return h.state_of(stop) == CommandState::kDone; }) > 0);
+  REQUIRE(kt::bit(*h.x, plc::kStateMotionCommandsLocked));
+
+  const uint16_t reset = h.post(kt::simple(CommandType::kReset));
+  h.cycles(1);
+  CHECK(h.state_of(reset) == CommandState::kDone);
+  CHECK_FALSE(kt::bit(*h.x, plc::kStateMotionCommandsLocked));
+  CHECK(kt::axis_state(*h.x) == AxisState::kStandstill);
+
+  const uint16_t again = h.post(kt::move_absolute(0.0, 100.0));
+  h.cycles(1);
+  CHECK(h.state_of(again) == CommandState::kActive);
+}
+
 TEST_CASE("a second Stop replaces the first, which is aborted", "[kernel][answers][stop]") {
   kt::Harness h;
   h.post(kt::move_velocity(1000.0, 1));

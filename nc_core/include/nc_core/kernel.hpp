@@ -45,7 +45,8 @@
 //   0x4357 — each stops on the emergency ramp. Controller enable removed during a job: 0x4356
 //   and, the drive being off, no ramp. The first error is kept until Reset.
 // - Without controller enable the drive is off and the set position follows the actual one.
-// - Reset clears the axis error (and the warning) but not the MC_Stop lock. When the set values
+// - Reset clears the axis error (and the warning) and cancels the MC_Stop lock (as Tc2_MC2
+//   documents for MC_Reset). When the set values
 //   are at rest the set position is moved to the actual position (the axis holds where it
 //   stands, with no following error left); an error ramp still running finishes first.
 // - Window and filter times count samples, each worth one NC cycle: the following error is

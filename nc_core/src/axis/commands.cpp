@@ -47,8 +47,10 @@ void ServoAxis::handle(const plc::Command& command) noexcept {
       code = start_halt_or_stop(command);
       break;
     case CommandType::kReset:
-      // Answered at once and without taking CmdNo: a reset is not a job.
+      // Answered at once and without taking CmdNo: a reset is not a job. It also cancels an
+      // MC_Stop lock (Tc2_MC2: "the locking of the axis is canceled with an MC_Reset").
       reset_error();
+      locked_ = false;
       ref_.Mailbox.set_answer(command.number, CommandState::kDone);
       return;
     case CommandType::kStopRelease:
