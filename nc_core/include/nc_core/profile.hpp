@@ -76,9 +76,9 @@ class Profile {
   // Ends the profile; when `exact_end` is given, the final state is set to it (removing the
   // rounding of the integration) — the planners pass the exact target state.
   void close(const KinematicState* exact_end = nullptr, bool holds_velocity = false) noexcept;
-  // Re-anchors the positions of segments [first, end) backwards from the final state, so that
-  // the end of a profile is exact relative to its target even after a long excursion (rounding
-  // then stays relative to the positions near each end). Call after close().
+  // Re-anchors the velocities and positions of segments [first, end) backwards from the final
+  // state, so that the end of a profile is exact relative to its target even after a long
+  // excursion (rounding then stays relative to the values near each end). Call after close().
   void anchor_to_end(std::size_t first) noexcept;
   // The running end state while building (integrated from the last segment).
   KinematicState end_state() const noexcept { return end_; }

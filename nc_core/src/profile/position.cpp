@@ -17,6 +17,7 @@
 #include "nc_core/profile.hpp"
 #include "profile/rest_to_rest.hpp"
 #include "profile/root.hpp"
+#include "profile/stop_point.hpp"
 #include "profile/validate.hpp"
 #include "profile/velocity_change.hpp"
 
@@ -73,7 +74,8 @@ Profile plan_position(const KinematicState& start, double target, const Limits& 
   // A target within rounding of the shortest stop's end is that end: re-planning from a state
   // sampled on a profile's final stop (absolute positions carry rounding of a few ulp) must give
   // that same stop, not a tiny push whose duration grows with the cube root of the rounding.
-  const double dead_zone = 64.0 * DBL_EPSILON * std::max(std::abs(start.p), std::abs(target));
+  const double dead_zone =
+      64.0 * DBL_EPSILON * std::max({std::abs(start.p), std::abs(target), std::abs(stop_distance)});
   if (std::abs(rest) <= dead_zone) {
     return finish(start, target, 1.0, stop, n_stop, 0.0, nullptr, 0);
   }
@@ -88,19 +90,29 @@ Profile plan_position(const KinematicState& start, double target, const Limits& 
   if (n_push < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
 
   KinematicState s{0.0, dir * start.v, dir * start.a};
+  double s_here = dir * stop_distance;  // where the shortest stop from s ends
   for (int i = 0; i < n_push; ++i) {
     const KinematicState next = detail::advance(s, push[i]);
-    const double s_next = next.p + detail::stop_distance(next.v, next.a, bounds);
+    const double s_next = next.p + detail::stop_distance_of(next.v, next.a, bounds);
     if (s_next >= goal) {
       // The switch from push to stop lies in this piece.
       const double jerk = push[i].j;
-      auto f = [&](double tau) {
-        const KinematicState x = detail::advance(s, jerk, tau);
-        return x.p + detail::stop_distance(x.v, x.a, bounds) - goal;
+      // S(tau) - goal with its derivatives: p' = v, v' = a, a' = jerk along the push.
+      auto fd = [&](double tau) {
+        using detail::Jet;
+        const Jet t{tau, 1.0, 0.0};
+        const Jet c6{jerk / 6.0, 0.0, 0.0};
+        const Jet p =
+            Jet{s.p, 0.0, 0.0} + t * (Jet{s.v, 0.0, 0.0} + t * (Jet{0.5 * s.a, 0.0, 0.0} + t * c6));
+        const Jet v = Jet{s.v, 0.0, 0.0} + t * (Jet{s.a, 0.0, 0.0} + (0.5 * jerk) * t);
+        const Jet a = Jet{s.a, 0.0, 0.0} + jerk * t;
+        const Jet d = detail::stop_distance_of(v, a, bounds);
+        return detail::RootPoint{p.x + d.x - goal, p.d + d.d, p.dd + d.dd,
+                                 8.0 * DBL_EPSILON * (std::abs(p.x) + std::abs(d.x) + goal)};
       };
-      const double f0 = s.p + detail::stop_distance(s.v, s.a, bounds) - goal;
-      const double f_tol = 2.0 * DBL_EPSILON * std::abs(goal);
-      const double tau = detail::find_root(f, 0.0, push[i].t, f0, s_next - goal, f_tol);
+      // Start at the secant point of the bracket.
+      const double x0 = push[i].t * std::clamp((goal - s_here) / (s_next - s_here), 0.0, 1.0);
+      const double tau = detail::find_root_quadratic(fd, 0.0, push[i].t, x0);
       const KinematicState x = detail::advance(s, jerk, tau);
       push[i] = Piece{tau, jerk, x.a, NAN};
       n_stop = detail::velocity_change(x.v, x.a, 0.0, bounds, stop);
@@ -108,6 +120,7 @@ Profile plan_position(const KinematicState& start, double target, const Limits& 
       return finish(start, target, dir, push, i + 1, 0.0, stop, n_stop);
     }
     s = next;
+    s_here = s_next;
   }
   // The push reaches V: cruise for the rest, then stop from (V, 0).
   n_stop = detail::velocity_change(limits.velocity, 0.0, 0.0, bounds, stop);

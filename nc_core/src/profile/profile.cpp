@@ -54,10 +54,17 @@ void Profile::close(const KinematicState* exact_end, bool holds_velocity) noexce
 void Profile::anchor_to_end(std::size_t first) noexcept {
   // The first segment keeps the start state itself.
   if (first == 0) first = 1;
+  // Velocities first (back from the final one), then positions from those: a state sampled on
+  // the tail is then consistent with the exact end to the rounding of its own values, not of the
+  // largest values the profile went through before.
   double next_p = final_.p;
+  double next_v = final_.v;
   for (std::size_t i = count_; i > first; --i) {
     Segment& seg = segments_[i - 1];
-    seg.p = next_p - detail::advance(KinematicState{0.0, seg.v, seg.a}, seg.j, seg.duration).p;
+    const double t = seg.duration;
+    seg.v = next_v - t * (seg.a + 0.5 * seg.j * t);
+    seg.p = next_p - t * (seg.v + t * (0.5 * seg.a + t * (seg.j / 6.0)));
+    next_v = seg.v;
     next_p = seg.p;
   }
 }

@@ -69,3 +69,46 @@ double find_root(F&& f, double lo, double hi, double f_lo, double f_hi, double f
 }
 
 }  // namespace nc::detail
+
+namespace nc::detail {
+
+// A second-order root finder safeguarded by the bracket [lo, hi] (f(lo) < 0 < f(hi), f
+// increasing), from x: `fd(x)` returns f, f', f'' and the rounding level of f (a RootPoint). Each
+// step solves the local quadratic model (exact for the quadratic pieces of the stop point, fast
+// where Newton crawls on strongly curved pieces); steps leaving the bracket become bisections.
+// Ends when |f| is at its rounding level or the bracket is a few ulp wide.
+struct RootPoint {
+  double f = 0.0;
+  double df = 0.0;
+  double ddf = 0.0;
+  double tol = 0.0;
+};
+
+template <class FD>
+double find_root_quadratic(FD&& fd, double lo, double hi, double x) noexcept {
+  for (int iter = 0; iter < 100; ++iter) {
+    const RootPoint y = fd(x);
+    if (std::abs(y.f) <= y.tol) return x;
+    if (y.f < 0.0) {
+      lo = x;
+    } else {
+      hi = x;
+    }
+    double step;
+    const double disc = y.df * y.df - 2.0 * y.f * y.ddf;
+    if (y.df > 0.0 && disc >= 0.0) {
+      step = -2.0 * y.f / (y.df + std::sqrt(disc));  // the model's root nearer to x
+    } else if (y.df > 0.0) {
+      step = -y.f / y.df;
+    } else {
+      step = 0.5 * (lo + hi) - x;
+    }
+    double next = x + step;
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (hi - lo <= 4.0 * DBL_EPSILON * std::abs(hi)) return next;
+    x = next;
+  }
+  return x;
+}
+
+}  // namespace nc::detail
