@@ -9,7 +9,6 @@
 // while |v| shrinks |a| <= deceleration (A-), always |v| <= velocity (V) and |da/dt| <= jerk (J).
 #pragma once
 
-#include <array>
 #include <cstddef>
 
 #include "plc_interface/error_code.hpp"
@@ -65,7 +64,7 @@ class Profile {
   bool holds_velocity() const noexcept { return holds_velocity_; }
 
   std::size_t segment_count() const noexcept { return count_; }
-  const Segment& segment(std::size_t i) const noexcept { return segments_[i]; }
+  const Segment& segment(std::size_t i) const noexcept { return segments_.items[i]; }
 
   // Builder used by the planners: start at a state, append constant-jerk pieces, then close.
   void reset(const KinematicState& start) noexcept;
@@ -84,7 +83,13 @@ class Profile {
   KinematicState end_state() const noexcept { return end_; }
 
  private:
-  std::array<Segment, kMaxSegments> segments_{};
+  // Storage that is not cleared on construction (planning would pay for clearing the whole
+  // fixed capacity): only [0, count_) is ever written before it is read.
+  union Storage {
+    Storage() noexcept {}
+    Segment items[kMaxSegments];
+  };
+  Storage segments_;
   std::size_t count_ = 0;
   double duration_ = 0.0;
   KinematicState start_{};

@@ -32,13 +32,8 @@ bool Profile::append(double duration, double jerk) noexcept {
 bool Profile::append(double duration, double jerk, double exact_a, double exact_v) noexcept {
   if (!(duration > 0.0)) return true;
   if (count_ == kMaxSegments) return false;
-  Segment& seg = segments_[count_++];
-  seg.t0 = duration_;
-  seg.duration = duration;
-  seg.p = end_.p;
-  seg.v = end_.v;
-  seg.a = end_.a;
-  seg.j = jerk;
+  // Whole-object assignment: begins the element's lifetime in the uncleared storage.
+  segments_.items[count_++] = Segment{duration_, duration, end_.p, end_.v, end_.a, jerk};
   end_ = detail::advance(end_, jerk, duration);
   if (!std::isnan(exact_a)) end_.a = exact_a;
   if (!std::isnan(exact_v)) end_.v = exact_v;
@@ -60,7 +55,7 @@ void Profile::anchor_to_end(std::size_t first) noexcept {
   double next_p = final_.p;
   double next_v = final_.v;
   for (std::size_t i = count_; i > first; --i) {
-    Segment& seg = segments_[i - 1];
+    Segment& seg = segments_.items[i - 1];
     const double t = seg.duration;
     seg.v = next_v - t * (seg.a + 0.5 * seg.j * t);
     seg.p = next_p - t * (seg.v + t * (0.5 * seg.a + t * (seg.j / 6.0)));
@@ -76,9 +71,9 @@ KinematicState Profile::at(double t) const noexcept {
   }
   if (!(t > 0.0)) return start_;
   std::size_t i = count_ - 1;
-  while (i > 0 && segments_[i].t0 > t)
+  while (i > 0 && segments_.items[i].t0 > t)
     --i;
-  const Segment& seg = segments_[i];
+  const Segment& seg = segments_.items[i];
   const double tau = t - seg.t0;
   if (tau <= 0.5 * seg.duration) {
     return detail::advance(KinematicState{seg.p, seg.v, seg.a}, seg.j, tau);
@@ -88,18 +83,19 @@ KinematicState Profile::at(double t) const noexcept {
   // approaches an exactly known end (v = 0 at a reversal, the target) without the drift of the
   // segment's length.
   const KinematicState end =
-      i + 1 < count_ ? KinematicState{segments_[i + 1].p, segments_[i + 1].v, segments_[i + 1].a}
+      i + 1 < count_ ? KinematicState{segments_.items[i + 1].p, segments_.items[i + 1].v,
+                                      segments_.items[i + 1].a}
                      : final_;
-  const double t_end = i + 1 < count_ ? segments_[i + 1].t0 : duration_;
+  const double t_end = i + 1 < count_ ? segments_.items[i + 1].t0 : duration_;
   return detail::advance(end, seg.j, std::min(t - t_end, 0.0));
 }
 
 double Profile::jerk_at(double t) const noexcept {
   if (count_ == 0 || t < 0.0 || t >= duration_) return 0.0;
   std::size_t i = count_ - 1;
-  while (i > 0 && segments_[i].t0 > t)
+  while (i > 0 && segments_.items[i].t0 > t)
     --i;
-  return segments_[i].j;
+  return segments_.items[i].j;
 }
 
 }  // namespace nc

@@ -86,6 +86,7 @@ struct RootPoint {
 
 template <class FD>
 double find_root_quadratic(FD&& fd, double lo, double hi, double x) noexcept {
+  double last_step = 0.0;  // the previous model step (its model predicted f = 0 here)
   for (int iter = 0; iter < 100; ++iter) {
     const RootPoint y = fd(x);
     if (std::abs(y.f) <= y.tol) return x;
@@ -104,8 +105,18 @@ double find_root_quadratic(FD&& fd, double lo, double hi, double x) noexcept {
       step = 0.5 * (lo + hi) - x;
     }
     double next = x + step;
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (!(next > lo && next < hi)) {
+      next = 0.5 * (lo + hi);
+      step = 0.0;
+    } else if (last_step != 0.0) {
+      // The model's error shrinks with the cube of the step: |f| now is what the last model
+      // missed by, so the next miss is about |f| (step / last_step)^3. Below the tolerance the
+      // step is taken without checking it.
+      const double r = std::abs(step / last_step);
+      if (std::abs(y.f) * r * r * r <= 0.125 * y.tol) return next;
+    }
     if (hi - lo <= 4.0 * DBL_EPSILON * std::abs(hi)) return next;
+    last_step = step;
     x = next;
   }
   return x;
