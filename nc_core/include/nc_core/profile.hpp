@@ -53,8 +53,9 @@ class Profile {
   double duration() const noexcept { return duration_; }
 
   // State at time t; t < 0 gives the start state, t >= duration() the final state (for a
-  // velocity profile, see holds_velocity()). Exact at segment boundaries (each segment stores its
-  // start state).
+  // velocity profile, see holds_velocity()). Exact at segment boundaries: each segment stores its
+  // start state, its first half is evaluated forward from it and its second half back from the
+  // next segment's start (or the exact final state), so at(T - tiny) approaches the target.
   KinematicState at(double t) const noexcept;
   double jerk_at(double t) const noexcept;
   KinematicState start_state() const noexcept { return start_; }
@@ -100,8 +101,11 @@ class Profile {
 };
 
 // From any state to rest at `target` in the least time. Start states outside the limits are
-// first brought back inside them as fast as the limits allow; targets the axis cannot stop
-// before produce one continuous profile that reverses through v = 0.
+// first brought back inside them as fast as the limits allow (|v| > V lands on V from above,
+// without undershoot); targets the axis cannot stop before produce one continuous profile that
+// reverses through v = 0. The final state is exactly (target, 0, 0). A target within 64 ulp of
+// max(|p|, |target|, stop distance) of the shortest stop's end is that end (the shortest stop):
+// re-planning from a state sampled on a final ramp must not turn rounding into extra motion.
 Profile plan_position(const KinematicState& start, double target, const Limits& limits) noexcept;
 
 // From any state to the constant velocity `velocity` (either sign, |velocity| <= V, otherwise
@@ -110,7 +114,8 @@ Profile plan_position(const KinematicState& start, double target, const Limits& 
 // velocity (holds_velocity() is true).
 Profile plan_velocity(const KinematicState& start, double velocity, const Limits& limits) noexcept;
 
-// The shortest stop from any state with deceleration limit `deceleration` and jerk `jerk`.
+// The shortest stop from any state with deceleration limit `deceleration` and jerk `jerk`. Where
+// an overshoot through v = 0 cannot be avoided, `deceleration` also bounds |a| beyond it.
 Profile plan_stop(const KinematicState& start, double deceleration, double jerk) noexcept;
 
 }  // namespace nc

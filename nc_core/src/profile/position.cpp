@@ -5,11 +5,15 @@
 // reached. The point S(tau) where that stop ends moves monotonically towards the push direction,
 // so the direction is the side of the target relative to the shortest stop from the start, and
 // tau is the root of S(tau) = target: first bracketed between the push's piece boundaries, then
-// refined to machine precision. Seed 000 §2.1's 7 phases are the rest-to-rest special case (push
-// = phases 1-3 up to the switch, cruise = phase 4, stop = phases 5-7); a target the axis cannot
-// stop before gives a push in the opposite direction, i.e. one continuous profile reversing
-// through v = 0. Start states outside the limits are brought back by the push itself (it is a
-// velocity change to ±V and so returns inside the bounds at maximum jerk without undershoot).
+// solved by second-order steps on exact derivatives (profile/root.hpp, profile/stop_point.hpp).
+// From rest the same profile comes in closed form (profile/rest_to_rest.cpp). Seed 000 §2.1's 7
+// phases are the rest-to-rest special case (push = phases 1-3 up to the switch, cruise = phase 4,
+// stop = phases 5-7); a target the axis cannot stop before gives a push in the opposite direction,
+// i.e. one continuous profile reversing through v = 0. Start states outside the limits are brought
+// back by the push itself (it is a velocity change to ±V and so returns inside the bounds at
+// maximum jerk without undershoot). Everything after the push is anchored back from the exact
+// target, so both ends of a profile are exact relative to their own values even after a long
+// excursion.
 #include <algorithm>
 #include <cfloat>
 #include <cmath>

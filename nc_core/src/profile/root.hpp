@@ -1,74 +1,8 @@
-// A bracketed root finder for the planner's monotone one-dimensional equations (internal).
+// The bracketed root finder for plan_position's switch time (internal).
 #pragma once
 
 #include <cfloat>
 #include <cmath>
-
-namespace nc::detail {
-
-// Brent's method on [lo, hi] with f(lo) = f_lo, f(hi) = f_hi of opposite sign (or one zero):
-// inverse quadratic / secant steps guarded by bisection, until the bracket is a few ulp wide or
-// |f| <= f_tol (the rounding level of f).
-template <class F>
-double find_root(F&& f, double lo, double hi, double f_lo, double f_hi, double f_tol) noexcept {
-  if (f_lo == 0.0) return lo;
-  if (f_hi == 0.0) return hi;
-  if ((f_lo > 0.0) == (f_hi > 0.0)) return std::abs(f_lo) < std::abs(f_hi) ? lo : hi;
-  double a = lo, fa = f_lo, b = hi, fb = f_hi;
-  double c = a, fc = fa, d = b - a, e = d;
-  for (int iter = 0; iter < 400; ++iter) {
-    if ((fb > 0.0) == (fc > 0.0)) {
-      c = a;
-      fc = fa;
-      d = e = b - a;
-    }
-    if (std::abs(fc) < std::abs(fb)) {
-      a = b;
-      b = c;
-      c = a;
-      fa = fb;
-      fb = fc;
-      fc = fa;
-    }
-    const double tol = 2.0 * DBL_EPSILON * std::abs(b) + DBL_MIN;
-    const double m = 0.5 * (c - b);
-    if (std::abs(m) <= tol || std::abs(fb) <= f_tol) return b;
-    if (std::abs(e) < tol || std::abs(fa) <= std::abs(fb)) {
-      d = m;
-      e = m;
-    } else {
-      const double s = fb / fa;
-      double p, q;
-      if (a == c) {
-        p = 2.0 * m * s;
-        q = 1.0 - s;
-      } else {
-        const double qq = fa / fc, r = fb / fc;
-        p = s * (2.0 * m * qq * (qq - r) - (b - a) * (r - 1.0));
-        q = (qq - 1.0) * (r - 1.0) * (s - 1.0);
-      }
-      if (p > 0.0) {
-        q = -q;
-      } else {
-        p = -p;
-      }
-      if (2.0 * p < std::fmin(3.0 * m * q - std::abs(tol * q), std::abs(e * q))) {
-        e = d;
-        d = p / q;
-      } else {
-        d = m;
-        e = m;
-      }
-    }
-    a = b;
-    fa = fb;
-    b += std::abs(d) > tol ? d : (m > 0.0 ? tol : -tol);
-    fb = f(b);
-  }
-  return b;
-}
-
-}  // namespace nc::detail
 
 namespace nc::detail {
 

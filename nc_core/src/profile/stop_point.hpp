@@ -52,7 +52,7 @@ inline double constant(double, double c) noexcept {
   return c;
 }
 
-inline constexpr double kStopRel = 1e-13;  // as kRel in velocity_change.cpp
+inline constexpr double kStopRel = kDecisionTolerance;
 
 // Distance of the shortest stop from (v, a) (stop_change's pieces, integrated).
 template <class T>

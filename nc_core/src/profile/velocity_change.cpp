@@ -17,7 +17,7 @@
 namespace nc::detail {
 namespace {
 
-constexpr double kRel = 1e-13;  // relative tolerance of the mode decisions
+constexpr double kRel = kDecisionTolerance;
 
 int upward(double v, double a, double v1, const Bounds& b, Piece* out) noexcept {
   const double jerk = b.j;
@@ -188,12 +188,6 @@ double pieces_distance(double v0, double a0, const Piece* pieces, int count) noe
   for (int i = 0; i < count; ++i)
     s = advance(s, pieces[i]);
   return s.p;
-}
-
-double stop_distance(double v, double a, const Bounds& bounds) noexcept {
-  Piece pieces[kMaxChangePieces];
-  const int n = velocity_change(v, a, 0.0, bounds, pieces);
-  return n < 0 ? 0.0 : pieces_distance(v, a, pieces, n);
 }
 
 }  // namespace nc::detail

@@ -11,6 +11,10 @@ namespace nc::detail {
 // (A+ < A-), hold, rise again after v = 0 (A- < A+), hold, final ramp — plus slack.
 inline constexpr int kMaxChangePieces = 10;
 
+// Relative tolerance of the walk's decisions (at a bound, on a curve, v_nat = v1): values within
+// it of a boundary are taken as on it, so re-planning from a sampled state follows the same path.
+inline constexpr double kDecisionTolerance = 1e-13;
+
 // The velocity at which a reaches 0 when it is brought there with maximum jerk.
 inline double natural_velocity(double v, double a, double jerk) noexcept {
   return v + a * (a < 0.0 ? -a : a) / (2.0 * jerk);
@@ -25,8 +29,5 @@ int velocity_change(double v0, double a0, double v1, const Bounds& bounds, Piece
 
 // Distance travelled along `pieces` from velocity v0 and acceleration a0.
 double pieces_distance(double v0, double a0, const Piece* pieces, int count) noexcept;
-
-// Distance of the shortest stop (time-optimal change to v = 0, a = 0) from (v, a).
-double stop_distance(double v, double a, const Bounds& bounds) noexcept;
 
 }  // namespace nc::detail
