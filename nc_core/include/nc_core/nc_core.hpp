@@ -8,3 +8,4 @@
 #include "nc_core/profile.hpp"
 #include "nc_core/scope.hpp"
 #include "nc_core/svg_plot.hpp"
+#include "nc_core/trapezoid.hpp"
