@@ -17,7 +17,7 @@ run() {
   shift 2
   echo "=== ${label}: configure and build (${build}) ==="
   if ! cmake -S "${root}" -B "${build}" -DNCSDK_BUILD_TESTS=ON -DNCSDK_BUILD_SAMPLES=ON \
-      -DNCSDK_BUILD_BENCHMARKS=OFF -DNCSDK_WERROR=ON "$@"; then
+      -DNCSDK_BUILD_BENCHMARKS=OFF "$@"; then
     printf -v "result_${label}" '%s' "configure failed"
     return 1
   fi
@@ -39,12 +39,15 @@ failed=0
 result_release="not run"
 result_sanitize="not run"
 
-run release "${root}/build-tests-release" -DCMAKE_BUILD_TYPE=Release || failed=1
+run release "${root}/build-tests-release" -DCMAKE_BUILD_TYPE=Release -DNCSDK_WERROR=ON || failed=1
 
 # The sanitizers need no optimisation beyond -O1 to keep their reports exact; -g for lines.
+# Warnings are not errors here: GCC's instrumentation gives false maybe-uninitialized warnings
+# inside libstdc++ (the Release build above holds the code to zero warnings).
 ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=0}" \
 UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}" \
-  run sanitize "${root}/build-tests-sanitize" -DNCSDK_SANITIZE=ON -DCMAKE_BUILD_TYPE=Debug \
+  run sanitize "${root}/build-tests-sanitize" -DNCSDK_SANITIZE=ON -DNCSDK_WERROR=OFF \
+  -DCMAKE_BUILD_TYPE=Debug \
   "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g" || failed=1
 
 echo "=== summary ==="
