@@ -7,7 +7,12 @@
 // Stop locks motion commands until StopRelease or Reset), and the test decides the rest —
 // when the job reaches its velocity, ends, fails, or which command is refused with what code.
 // That lets block tests drive every answer sequence, in any order, cycle by cycle.
-// Test code: it allocates (it keeps the history of taken commands).
+// Position compensation (kMoveSuperImposed) runs beside the executing job without taking CmdNo
+// (StateDWord bit 13; a second one while it runs is refused with 0x4245); kAbortSuperposition
+// aborts it at once and is Done (0x4246 when none runs). While it runs, finish() ends it (not
+// the executing job) and fail() fails it with the executing job. kExtSetPointGenEnable / Disable
+// are Done at once and set / clear StateDWord bit 14 (enabling is refused on an axis in error or
+// locked). Test code: it allocates (it keeps the history of taken commands).
 #pragma once
 
 #include <cstddef>
@@ -44,12 +49,14 @@ class ScriptedNc {
   // Outcomes of the job the axis executes (no effect when none runs).
   void reach() { set_executing(plc::CommandState::kReached); }
   void finish() {
+    if (end_compensation(plc::CommandState::kDone)) return;
     if (!set_executing(plc::CommandState::kDone)) return;
     // A finished stop leaves the axis stopping-and-locked until the release (Tc2_MC2 MC_Stop).
     set_axis_state(locked() ? plc::AxisState::kStopping : plc::AxisState::kStandstill);
   }
   // The axis goes into error during the job: the job fails with the axis's error code.
   void fail(plc::ErrorCode code) {
+    end_compensation(plc::CommandState::kError, plc::to_id(code));
     set_executing(plc::CommandState::kError, plc::to_id(code));
     axis_.NcToPlc.ErrorCode = plc::to_id(code);
     axis_.NcToPlc.StateDWord = plc::with_bit(axis_.NcToPlc.StateDWord, plc::kStateError, true);
@@ -69,6 +76,8 @@ class ScriptedNc {
   bool in_error() const { return plc::test_bit(axis_.NcToPlc.StateDWord, plc::kStateError); }
   // Number of the command the axis executes (0: none yet).
   uint16_t executing() const { return axis_.NcToPlc.CmdNo; }
+  // Number of the running position compensation (0: none).
+  uint16_t compensating() const { return compensation_; }
 
   // Every command taken so far, in order.
   const std::vector<plc::Command>& taken() const { return taken_; }
@@ -88,7 +97,9 @@ class ScriptedNc {
 
  private:
   static bool is_motion(plc::CommandType type) {
-    return type != plc::CommandType::kReset && type != plc::CommandType::kStopRelease;
+    return type != plc::CommandType::kReset && type != plc::CommandType::kStopRelease &&
+           type != plc::CommandType::kExtSetPointGenDisable &&
+           type != plc::CommandType::kAbortSuperposition;
   }
 
   void handle(const plc::Command& command) {
@@ -112,6 +123,18 @@ class ScriptedNc {
         set_lock(false);
         answer(command.number, plc::CommandState::kDone);
         return;
+      case plc::CommandType::kExtSetPointGenDisable:
+        set_state_bit(plc::kStateExtSetPointGenEnabled, false);
+        answer(command.number, plc::CommandState::kDone);
+        return;
+      case plc::CommandType::kAbortSuperposition:
+        if (!end_compensation(plc::CommandState::kAborted)) {
+          answer(command.number, plc::CommandState::kError,
+                 plc::to_id(plc::ErrorCode::kCompensationNotActive));
+          return;
+        }
+        answer(command.number, plc::CommandState::kDone);
+        return;
       default:
         break;
     }
@@ -123,6 +146,23 @@ class ScriptedNc {
     if (locked() && command.type != plc::CommandType::kStop) {
       answer(command.number, plc::CommandState::kError,
              plc::to_id(plc::ErrorCode::kMotionCommandsLocked));
+      return;
+    }
+    // Jobs beside the executing one: they do not take CmdNo.
+    if (command.type == plc::CommandType::kExtSetPointGenEnable) {
+      set_state_bit(plc::kStateExtSetPointGenEnabled, true);
+      answer(command.number, plc::CommandState::kDone);
+      return;
+    }
+    if (command.type == plc::CommandType::kMoveSuperImposed) {
+      if (compensation_ != 0) {
+        answer(command.number, plc::CommandState::kError,
+               plc::to_id(plc::ErrorCode::kCompensationActive));
+        return;
+      }
+      compensation_ = command.number;
+      set_state_bit(plc::kStateCompensating, true);
+      answer(command.number, plc::CommandState::kActive);
       return;
     }
     // Accepted: the job it replaces is aborted; the axis now executes this number.
@@ -163,6 +203,19 @@ class ScriptedNc {
     if (number == axis_.NcToPlc.CmdNo) axis_.NcToPlc.CmdState = static_cast<uint16_t>(state);
   }
 
+  // Ends the running compensation with `state`; false when none runs.
+  bool end_compensation(plc::CommandState state, uint32_t code = 0) {
+    if (compensation_ == 0) return false;
+    answer(compensation_, state, code);
+    compensation_ = 0;
+    set_state_bit(plc::kStateCompensating, false);
+    return true;
+  }
+
+  void set_state_bit(uint32_t bit, bool on) {
+    axis_.NcToPlc.StateDWord = plc::with_bit(axis_.NcToPlc.StateDWord, bit, on);
+  }
+
   void set_lock(bool on) {
     axis_.NcToPlc.StateDWord =
         plc::with_bit(axis_.NcToPlc.StateDWord, plc::kStateMotionCommandsLocked, on);
@@ -171,6 +224,7 @@ class ScriptedNc {
   plc::AXIS_REF& axis_;
   std::vector<plc::Command> taken_;
   std::deque<plc::ErrorCode> refusals_;
+  uint16_t compensation_ = 0;
 };
 
 }  // namespace fbtest

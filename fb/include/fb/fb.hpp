@@ -16,3 +16,8 @@
 #include "fb/mc_reset.hpp"
 #include "fb/mc_stop.hpp"
 #include "fb/types.hpp"
+#include "fb/mc_abort_superposition.hpp"
+#include "fb/mc_ext_set_point_gen_disable.hpp"
+#include "fb/mc_ext_set_point_gen_enable.hpp"
+#include "fb/mc_ext_set_point_gen_feed.hpp"
+#include "fb/mc_move_superimposed.hpp"

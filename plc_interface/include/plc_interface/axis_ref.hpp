@@ -87,6 +87,11 @@ struct NCTOPLC_AXIS_REF {
   uint16_t CmdState = 0;              // its CommandState
   int32_t AxisIndex = -1;             // the kernel's index of this axis (for coupling commands)
   uint32_t CycleCounter = 0;          // NC cycles since start (wraps)
+  // The running (or last) position compensation as the NC plans it (B7; MC_MoveSuperImposed's
+  // ActualLength / ActualVelocityDiff): the compensation length in use (L, or the remaining
+  // distance when shorter) and the signed peak extra velocity (at most VK).
+  double CompensationLength = 0.0;
+  double CompensationVelocityDiff = 0.0;
 };
 
 struct PLCTONC_AXIS_REF {
