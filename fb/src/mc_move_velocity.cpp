@@ -5,7 +5,8 @@ namespace fb {
 void MC_MoveVelocity::operator()(plc::AXIS_REF& axis) noexcept {
   const detail::ExecuteOutputs out = block_(Execute, axis, [this]() noexcept {
     // The NC cannot tell a bad enum value from a meant one: checked here.
-    if (Direction != MC_Positive_Direction && Direction != MC_Negative_Direction) {
+    if (Direction != MC_Positive_Direction && Direction != MC_Negative_Direction &&
+        Direction != MC_Current_Direction) {
       return detail::refuse(plc::ErrorCode::kDirectionInvalid);
     }
     return detail::motion_start(plc::CommandType::kMoveVelocity, {.velocity = Velocity,

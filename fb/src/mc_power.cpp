@@ -15,8 +15,10 @@ void MC_Power::operator()(plc::AXIS_REF& axis) noexcept {
 
   // Written as a comparison that NaN fails.
   const bool override_valid = Override >= 0.0 && Override <= 100.0;
-  if (override_valid) {
+  if (override_valid && (!override_written_ || Override != written_override_)) {
     axis.PlcToNc.Override = static_cast<uint32_t>(std::lround(Override * 10'000.0));
+    override_written_ = true;
+    written_override_ = Override;
   }
 
   Status = plc::test_bit(axis.NcToPlc.StateDWord, plc::kStateOperational);

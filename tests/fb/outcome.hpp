@@ -60,12 +60,12 @@ void produce(Bench<B>& b, B& other, Outcome o) {
       break;
     case Outcome::kFailed:
       b.nc.cycle();
-      REQUIRE(b.call().active);
+      REQUIRE(shows_running<B>(b.call()));
       b.nc.fail(plc::ErrorCode::kFollowingErrorPosition);
       break;
     case Outcome::kAborted:
       b.nc.cycle();
-      REQUIRE(b.call().active);
+      REQUIRE(shows_running<B>(b.call()));
       Adapter<B>::prepare(other);
       other.Execute = true;
       other(b.axis);

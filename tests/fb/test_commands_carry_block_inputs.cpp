@@ -112,3 +112,64 @@ TEST_CASE("MC_Reset posts kReset", "[fb][command]") {
   fb::MC_Reset reset;
   REQUIRE(post_once(reset).type == plc::CommandType::kReset);
 }
+
+TEST_CASE("MC_MoveModulo posts kMoveModulo with Position, Velocity, the dynamics and Direction",
+          "[fb][command]") {
+  fb::MC_MoveModulo move;
+  move.Position = 540.0;  // seed 000 §2.1: one extra turn, ends at modulo 180
+  move.Velocity = 720.0;
+  move.Acceleration = 3600.0;
+  move.Deceleration = 1800.0;
+  move.Jerk = 36000.0;
+  move.Direction = fb::MC_Shortest_Way;
+  const plc::Command c = post_once(move);
+  REQUIRE(c.type == plc::CommandType::kMoveModulo);
+  REQUIRE(c.position == 540.0);
+  REQUIRE(c.velocity == 720.0);
+  REQUIRE(c.acceleration == 3600.0);
+  REQUIRE(c.deceleration == 1800.0);
+  REQUIRE(c.jerk == 36000.0);
+  REQUIRE(c.direction == 2);
+  REQUIRE(c.buffer_mode == 0);
+}
+
+TEST_CASE("MC_NewPos posts kNewPos with NewPos as the position", "[fb][command]") {
+  fb::MC_NewPos new_pos;
+  new_pos.NewPos = 5000.0;  // seed 000 §2.3: 0 → 3000 mm, then 5000 mm
+  const plc::Command c = post_once(new_pos);
+  REQUIRE(c.type == plc::CommandType::kNewPos);
+  REQUIRE(c.position == 5000.0);
+  REQUIRE(c.velocity == 0.0);
+}
+
+TEST_CASE(
+    "MC_NewPosAndVelo posts kNewPosAndVelo with EPos as the position, VNew as the velocity "
+    "and APos as the activation position",
+    "[fb][command]") {
+  fb::MC_NewPosAndVelo change;
+  change.NewPos = 4000.0;
+  change.NewVelo = 1000.0;
+  change.ActivationPos = 2500.0;
+  const plc::Command c = post_once(change);
+  REQUIRE(c.type == plc::CommandType::kNewPosAndVelo);
+  REQUIRE(c.position == 4000.0);
+  REQUIRE(c.velocity == 1000.0);
+  REQUIRE(c.activation_position == 2500.0);
+}
+
+TEST_CASE("MC_NewPos and MC_NewPosAndVelo post bad values unchanged: the NC validates them",
+          "[fb][command]") {
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  fb::MC_NewPos new_pos;
+  new_pos.NewPos = kNaN;
+  REQUIRE(std::isnan(post_once(new_pos).position));
+
+  fb::MC_NewPosAndVelo change;
+  change.NewPos = -std::numeric_limits<double>::infinity();
+  change.NewVelo = -1.0;
+  change.ActivationPos = std::numeric_limits<double>::infinity();
+  const plc::Command c = post_once(change);
+  REQUIRE(std::isinf(c.position));
+  REQUIRE(c.velocity == -1.0);
+  REQUIRE(std::isinf(c.activation_position));
+}

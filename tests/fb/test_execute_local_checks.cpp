@@ -1,13 +1,14 @@
 // Checks a block makes itself, because the NC cannot know them: buffer modes other than
-// MC_Aborting (0x4F03), an MC_MoveVelocity direction other than positive or negative (0x4F07),
-// and a full mailbox (0x4F04). Each shows Error at once and posts nothing.
+// MC_Aborting (0x4F03), an MC_MoveVelocity direction other than positive, negative or current,
+// an MC_MoveModulo direction other than the four MC_Direction values (0x4F07), and a full
+// mailbox (0x4F04). Each shows Error at once and posts nothing.
 #include <catch2/catch.hpp>
 
 #include "block_under_test.hpp"
 
 TEMPLATE_TEST_CASE("a buffer mode other than MC_Aborting gives Error 0x4F03 and posts nothing",
-                   "[fb][local]", fb::MC_MoveAbsolute, fb::MC_MoveRelative, fb::MC_MoveVelocity,
-                   fb::MC_Halt) {
+                   "[fb][local]", fb::MC_MoveAbsolute, fb::MC_MoveRelative, fb::MC_MoveModulo,
+                   fb::MC_MoveVelocity, fb::MC_Halt) {
   const fb::MC_BufferMode mode =
       GENERATE(fb::MC_Buffered, fb::MC_BlendingLow, fb::MC_BlendingPrevious, fb::MC_BlendingNext,
                fb::MC_BlendingHigh, static_cast<fb::MC_BufferMode>(42));
@@ -32,11 +33,12 @@ TEST_CASE("MC_Aborting is posted with buffer mode 0", "[fb][local]") {
   REQUIRE(b.nc.last(plc::CommandType::kMoveAbsolute).buffer_mode == 0);
 }
 
-TEST_CASE("MC_MoveVelocity accepts only the positive and the negative direction", "[fb][local]") {
+TEST_CASE("MC_MoveVelocity accepts the positive, the negative and the current direction",
+          "[fb][local]") {
   SECTION("other directions give Error 0x4F07 and post nothing") {
     const fb::MC_Direction direction =
-        GENERATE(fb::MC_Shortest_Way, fb::MC_Current_Direction, fb::MC_Undefined_Direction,
-                 static_cast<fb::MC_Direction>(0), static_cast<fb::MC_Direction>(-1));
+        GENERATE(fb::MC_Shortest_Way, fb::MC_Undefined_Direction, static_cast<fb::MC_Direction>(0),
+                 static_cast<fb::MC_Direction>(5), static_cast<fb::MC_Direction>(-1));
     INFO("direction " << static_cast<int>(direction));
     fbtest::Bench<fb::MC_MoveVelocity> b;
     b.block.Direction = direction;
@@ -45,15 +47,48 @@ TEST_CASE("MC_MoveVelocity accepts only the positive and the negative direction"
     REQUIRE(o.error_id == 0x4F07);
     REQUIRE(b.axis.Mailbox.pending() == 0);
   }
-  SECTION("positive and negative are posted as their MC_Direction values 1 and 3") {
+  SECTION("positive, negative and current are posted as their MC_Direction values 1, 3, 4") {
     const fb::MC_Direction direction =
-        GENERATE(fb::MC_Positive_Direction, fb::MC_Negative_Direction);
+        GENERATE(fb::MC_Positive_Direction, fb::MC_Negative_Direction, fb::MC_Current_Direction);
     fbtest::Bench<fb::MC_MoveVelocity> b;
     b.block.Direction = direction;
     REQUIRE(b.call(true).busy);
     b.nc.cycle();
     REQUIRE(b.nc.last(plc::CommandType::kMoveVelocity).direction ==
-            (direction == fb::MC_Positive_Direction ? 1 : 3));
+            (direction == fb::MC_Positive_Direction   ? 1
+             : direction == fb::MC_Negative_Direction ? 3
+                                                      : 4));
+  }
+}
+
+TEST_CASE("MC_MoveModulo accepts the four directions of MC_Direction and no other value",
+          "[fb][local]") {
+  SECTION("MC_Undefined_Direction and values outside the enumeration give Error 0x4F07") {
+    const fb::MC_Direction direction =
+        GENERATE(fb::MC_Undefined_Direction, static_cast<fb::MC_Direction>(0),
+                 static_cast<fb::MC_Direction>(5), static_cast<fb::MC_Direction>(-1));
+    INFO("direction " << static_cast<int>(direction));
+    fbtest::Bench<fb::MC_MoveModulo> b;
+    b.block.Direction = direction;
+    const fbtest::Outputs o = b.call(true);
+    REQUIRE(o.error);
+    REQUIRE(o.error_id == 0x4F07);
+    REQUIRE(b.axis.Mailbox.pending() == 0);
+    REQUIRE(b.block.command_number() == 0);
+  }
+  SECTION("positive, shortest way, negative and current are posted as 1, 2, 3 and 4") {
+    const int value = GENERATE(1, 2, 3, 4);
+    fbtest::Bench<fb::MC_MoveModulo> b;
+    b.block.Direction = static_cast<fb::MC_Direction>(value);
+    REQUIRE(b.call(true).busy);
+    b.nc.cycle();
+    REQUIRE(b.nc.last(plc::CommandType::kMoveModulo).direction == value);
+  }
+  SECTION("the direction is checked before the buffer mode") {
+    fbtest::Bench<fb::MC_MoveModulo> b;
+    b.block.Direction = fb::MC_Undefined_Direction;
+    b.block.BufferMode = fb::MC_Buffered;
+    REQUIRE(b.call(true).error_id == 0x4F07);
   }
 }
 

@@ -1,7 +1,8 @@
 // MC_Power writes the enables into PlcToNc.ControlDWord (bit 0 Enable, 1 FeedEnablePlus,
 // 2 FeedEnableMinus; the feed enables only with Enable) and the override in percent as
-// round(Override · 10 000) into PlcToNc.Override (1 000 000 = 100 %), on every call. An override
-// outside 0 … 100 % or NaN is not written and shows Error 0x4238. Status = Operational bit.
+// round(Override · 10 000) into PlcToNc.Override (1 000 000 = 100 %) on its first call and
+// whenever the input changes (test_mc_set_override_against_mc_power.cpp). An override outside
+// 0 … 100 % or NaN is not written and shows Error 0x4238. Status = Operational bit.
 #include <catch2/catch.hpp>
 
 #include <cstdint>

@@ -3,9 +3,11 @@
 // Execute-type block (rules in fb/detail/execute_block.hpp). The job never ends by itself:
 // InVelocity (in place of Done) while the NC reports the constant velocity reached; the block
 // stays Busy and Active until another command takes the axis (CommandAborted) or the job fails
-// (Error). Direction must be MC_Positive_Direction or MC_Negative_Direction (others: 0x4F07,
-// checked here); it is passed to the NC as its MC_Direction value. Velocity must be > 0; the NC
-// checks it and the dynamics. Only BufferMode MC_Aborting is supported (others: 0x4F03).
+// (Error). Direction must be MC_Positive_Direction, MC_Negative_Direction or
+// MC_Current_Direction (keep the direction of the motion that runs; Tc2_MC2 allows these three;
+// others: 0x4F07, checked here); it is passed to the NC as its MC_Direction value, and the NC
+// refuses MC_Current_Direction where there is no direction to keep. Velocity must be > 0; the
+// NC checks it and the dynamics. Only BufferMode MC_Aborting is supported (others: 0x4F03).
 #pragma once
 
 #include <cstdint>

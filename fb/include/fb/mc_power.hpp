@@ -5,9 +5,11 @@
 // Enable AND Enable_Positive, bit 2 (feed enable minus) = Enable AND Enable_Negative — the feed
 // enables take effect only with Enable, as in Tc2_MC2 — and leaves the other bits alone.
 // Override (percent) is written as PlcToNc.Override = round(Override · 10 000) (1 000 000 =
-// 100 %). An Override outside 0 … 100 or NaN is not written (the last valid value stays) and
-// the block shows Error with 0x4238 until the input is valid again, independently of Enable
-// (the override is written whether the axis is enabled or not).
+// 100 %) on the block's first call and whenever the input differs from the value the block wrote
+// last — not on every call, so that an enabled MC_SetOverride on the same axis wins whatever the
+// call order (see mc_set_override.hpp). An Override outside 0 … 100 or NaN is not written (the
+// last valid value stays) and the block shows Error with 0x4238 until the input is valid again,
+// independently of Enable (the override is written whether the axis is enabled or not).
 // Status = NcToPlc.StateDWord bit 0 (Operational). Busy while Enable is TRUE; Active while
 // Enable is TRUE and the block's values are all applied (no Error).
 #pragma once
@@ -35,6 +37,10 @@ class MC_Power {
 
   // Cycle function: runs the block once.
   void operator()(plc::AXIS_REF& axis) noexcept;
+
+ private:
+  bool override_written_ = false;  // the block has written an override
+  double written_override_ = 0.0;  // %, the override it wrote last
 };
 
 }  // namespace fb

@@ -1,0 +1,73 @@
+// External setpoint generation of one axis (seed 000 §2.6, SPEC B8); see external_setpoint.hpp.
+#include "axis/external_setpoint.hpp"
+
+#include <cmath>
+
+namespace nc::detail {
+
+void ExternalSetpoint::enable(Type type, const KinematicState& start, double target) noexcept {
+  target_ = target;
+  if (taking() && type == type_) {
+    enabled_ = true;
+    final_cycle_ = false;
+    return;
+  }
+  type_ = type;
+  state_ = start;
+  enabled_ = true;
+  final_cycle_ = false;
+  was_moving_ = false;
+}
+
+void ExternalSetpoint::disable() noexcept {
+  if (!enabled_) return;
+  enabled_ = false;
+  final_cycle_ = true;
+}
+
+void ExternalSetpoint::abort() noexcept {
+  enabled_ = false;
+  final_cycle_ = false;
+  was_moving_ = false;
+  state_.v = 0.0;
+  state_.a = 0.0;
+}
+
+ExternalSetpoint::Step ExternalSetpoint::take(const plc::PLCTONC_AXIS_REF& in) noexcept {
+  Step step;
+  if (!taking()) {
+    step.state = state_;
+    return step;
+  }
+  const bool moving = in.ExtSetDirection == 1 || in.ExtSetDirection == -1;
+  const bool full = enabled_ && moving;
+  // Seed 000 §2.6: after the direction returns to 0, and after the disable, the external set
+  // position is taken for exactly one more cycle.
+  const bool position_only = !full && (final_cycle_ || was_moving_);
+  if (full) {
+    if (std::isfinite(in.ExtSetPos) && std::isfinite(in.ExtSetVelo) &&
+        std::isfinite(in.ExtSetAcc)) {
+      state_ = KinematicState{in.ExtSetPos, in.ExtSetVelo, in.ExtSetAcc};
+    } else {
+      step.not_finite = true;
+    }
+  } else if (position_only && std::isfinite(in.ExtSetPos)) {
+    state_ = KinematicState{in.ExtSetPos, 0.0, 0.0};
+  } else {
+    step.not_finite = position_only;  // position_only with a non-finite ExtSetPos
+  }
+  if (step.not_finite || !full) {
+    // Not taken (or the position only): the set position holds, nothing moves.
+    state_.v = 0.0;
+    state_.a = 0.0;
+  }
+  was_moving_ = enabled_ && moving;
+  if (final_cycle_) {
+    final_cycle_ = false;
+    step.finished = true;
+  }
+  step.state = state_;
+  return step;
+}
+
+}  // namespace nc::detail

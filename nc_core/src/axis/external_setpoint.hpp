@@ -1,0 +1,60 @@
+// External setpoint generation of one axis (seed 000 §2.6, seed 001, SPEC B8): set values fed by
+// the PLC every cycle through PlcToNc.ExtSetPos / ExtSetVelo / ExtSetAcc / ExtSetDirection.
+//
+// A packet is taken only while ExtSetDirection is -1 or +1. Two exceptions, both from the seed:
+// in the first NC cycle whose direction is no longer ±1, and in the first cycle after disabling,
+// the ExtSetPos then in the interface is still taken ("exactly one further cycle"); from the next
+// cycle on the set position is held (velocity and acceleration 0). A non-finite value in a packet
+// that would be taken is not taken: take() reports it and the axis raises an error.
+//
+// Absolute start type: state() is the axis's set state. Relative: state() is an offset added to
+// the internal generator's set values. Value type; cycle functions only (noexcept, no allocation).
+#pragma once
+
+#include <cstdint>
+
+#include "nc_core/profile.hpp"
+#include "plc_interface/axis_ref.hpp"
+
+namespace nc::detail {
+
+class ExternalSetpoint {
+ public:
+  // fb::E_PositionType values (seed 000 §2.6 "axis start types absolute (1) or relative (2)").
+  enum class Type : int32_t { kNone = 0, kAbsolute = 1, kRelative = 2 };
+
+  struct Step {
+    KinematicState state;     // the external set state (absolute) or offset (relative)
+    bool not_finite = false;  // a packet to be taken held NaN or inf: not taken
+    bool finished = false;    // the cycle after the disable has been taken: generation is over
+  };
+
+  // Switches on with `start` as the state held until the first packet is taken (absolute: the
+  // set state at the enable; relative: a zero offset). Enabling again with the same type keeps
+  // the state; only the target changes.
+  void enable(Type type, const KinematicState& start, double target) noexcept;
+  // Off after one more cycle, which still takes ExtSetPos (seed 000 §2.6 "Disabling").
+  void disable() noexcept;
+  // Off at once (axis error, reset, controller enable gone, stop): the state is held.
+  void abort() noexcept;
+
+  // One NC cycle: reads the packet in `in`.
+  Step take(const plc::PLCTONC_AXIS_REF& in) noexcept;
+
+  bool enabled() const noexcept { return enabled_; }
+  // Enabled, or in its one more cycle after the disable.
+  bool taking() const noexcept { return enabled_ || final_cycle_; }
+  Type type() const noexcept { return type_; }
+  double target() const noexcept { return target_; }
+  const KinematicState& state() const noexcept { return state_; }
+
+ private:
+  KinematicState state_{};
+  Type type_ = Type::kNone;
+  double target_ = 0.0;
+  bool enabled_ = false;
+  bool final_cycle_ = false;
+  bool was_moving_ = false;  // the previous cycle's direction was ±1
+};
+
+}  // namespace nc::detail
