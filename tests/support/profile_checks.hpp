@@ -311,7 +311,11 @@ inline Finding check_limits(const nc::Profile& prof, const nc::Limits& l, const 
       if (tb <= ta) continue;
       const nc::KinematicState mid = advance(s, 0.5 * (ta + tb));
       if (mid.v == 0.0 || mid.a == 0.0) continue;
-      const double bound = ((mid.v > 0.0) == (mid.a > 0.0)) ? l.acceleration : l.deceleration;
+      double bound = ((mid.v > 0.0) == (mid.a > 0.0)) ? l.acceleration : l.deceleration;
+      // A piece on which |v| never leaves the rounding of 0 has no direction: either bound
+      // (v is monotone on a piece, so its ends bound it).
+      if (std::max(std::fabs(advance(s, ta).v), std::fabs(advance(s, tb).v)) <= 4.0 * dv)
+        bound = std::max(l.acceleration, l.deceleration);
       for (double tau : {ta, tb}) {
         const double aa = std::fabs(s.a + tau * s.j);
         double allowed = bound;
