@@ -7,7 +7,9 @@
 // full precision for reproduction (NCSDK_PROFILE_SEED=<n> explores another seed).
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <string>
@@ -28,10 +30,12 @@ using profile_problems::Rng;
 constexpr long kPositionProblems = 30'000;
 constexpr long kVelocityProblems = 6'000;
 constexpr long kStopProblems = 3'000;
+constexpr long kOutsideProblems = 3'000;
 #else
 constexpr long kPositionProblems = 1'000'000;
 constexpr long kVelocityProblems = 200'000;
 constexpr long kStopProblems = 100'000;
+constexpr long kOutsideProblems = 200'000;
 #endif
 
 constexpr int kPrintedFailures = 8;
@@ -59,10 +63,11 @@ class Tally {
         std::printf("    %-17s %ld\n", profile_checks::check_name(static_cast<Check>(i)),
                     by_check_[i]);
     std::printf(
-        "    worst (value/limit - 1): v %.3g, a %.3g, j %.3g; worst end error: p %.3g (of "
-        "max(1,|p0|,|target|,|p| on the way)), v %.3g (of V), a %.3g (of A); worst jump %.3g\n",
-        e.velocity, e.acceleration, e.jerk, e.end_position, e.end_velocity, e.end_acceleration,
-        e.continuity);
+        "    worst (value/limit - 1): v %.3g, a %.3g beyond rounding (raw %.3g), j %.3g; worst "
+        "end error: p %.3g (of max(1,|p0|,|target|,|p| on the way)), v %.3g (of V), a %.3g (of "
+        "A); worst jump %.3g\n",
+        e.velocity, e.acceleration_net, e.acceleration, e.jerk, e.end_position, e.end_velocity,
+        e.end_acceleration, e.continuity);
     for (const std::string& s : examples_)
       std::printf("  %s\n", s.c_str());
     std::fflush(stdout);
@@ -101,6 +106,76 @@ TEST_CASE("a million random position problems end exactly at rest and never exce
   }
   tally.print(seed, worst);
   CHECK(tally.problems() == kPositionProblems);
+  CHECK(tally.failures() == 0);
+}
+
+namespace {
+
+// A start outside the limits (SPEC B2): above V with a not pushing |v| further up, or |a| above
+// its path-relative bound (up to 3x) without a forced overshoot of V or a forced reversal above
+// A+. Returns false when the drawn speed leaves no such acceleration.
+bool random_outside_state(Rng& rng, const nc::Limits& l, nc::KinematicState& s,
+                          profile_checks::StartRelief& relief) {
+  const double V = l.velocity;
+  const double J = l.jerk;
+  const double dir = rng.sign();
+  relief = {};
+  if (rng.chance(0.4)) {
+    // Above V (a lower override or a new velocity), braking or not accelerating.
+    const double speed = V * rng.uniform(1.0 + 1e-6, 3.0);
+    const profile_problems::AccelerationRange r =
+        profile_problems::feasible_acceleration_range(speed, l);
+    s.v = dir * speed;
+    s.a = rng.chance(0.3) ? 0.0 : -dir * rng.uniform(0.0, r.shrink);
+    relief.over_speed = true;
+    return true;
+  }
+  relief.over_acceleration = true;
+  if (rng.chance(0.5)) {
+    // Growing |v| with a above A+, but ramping a down at J still stays within V.
+    const double speed = V * rng.uniform();
+    const double cap = std::min(3.0 * l.acceleration, std::sqrt(2.0 * J * (V - speed)));
+    if (!(cap > l.acceleration * (1.0 + 1e-6))) return false;
+    s.v = dir * speed;
+    s.a = dir * rng.uniform(l.acceleration * (1.0 + 1e-6), cap);
+    return true;
+  }
+  // Shrinking |v| with a above A-, without a forced reversal beyond V or through v = 0 above A+.
+  const double speed = V * rng.uniform(1e-3, 1.0);
+  const double cap = std::min({3.0 * l.deceleration, std::sqrt(2.0 * J * (V + speed)),
+                               std::sqrt(l.acceleration * l.acceleration + 2.0 * J * speed)});
+  if (!(cap > l.deceleration * (1.0 + 1e-6))) return false;
+  s.v = dir * speed;
+  s.a = -dir * rng.uniform(l.deceleration * (1.0 + 1e-6), cap);
+  return true;
+}
+
+}  // namespace
+
+TEST_CASE("random starts outside the limits come back inside as the limits allow and end exactly",
+          "[profile][random]") {
+  const uint64_t seed = profile_problems::suite_seed(0x0075D1DEull);
+  Rng rng(seed);
+  Tally tally("plan_position, start outside the limits");
+  Extremes worst;
+  long k = 0;
+  while (k < kOutsideProblems) {
+    const nc::Limits l = profile_problems::random_limits(rng);
+    nc::KinematicState start{profile_problems::random_position(rng), 0.0, 0.0};
+    profile_checks::StartRelief relief;
+    if (!random_outside_state(rng, l, start, relief)) continue;
+    ++k;
+    const double target = start.p + profile_problems::random_distance(rng);
+    const nc::Profile prof = nc::plan_position(start, target, l);
+    Extremes e;
+    const Finding f =
+        profile_checks::check_position_profile(prof, start, target, l, {}, relief, &e);
+    worst.merge(e);
+    tally.record(f, f.ok() || !tally.needs_example()
+                        ? std::string()
+                        : profile_checks::describe_problem("plan_position", start, target, l));
+  }
+  tally.print(seed, worst);
   CHECK(tally.failures() == 0);
 }
 

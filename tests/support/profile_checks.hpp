@@ -80,7 +80,8 @@ struct Tolerance {
 // integrated end is from the requested state (error/scale).
 struct Extremes {
   double velocity = -1.0;
-  double acceleration = -1.0;
+  double acceleration = -1.0;      // raw: may pass 0 by the rounding slack at v = 0 crossings
+  double acceleration_net = -1.0;  // beyond the rounding slack (the checked quantity)
   double jerk = -1.0;
   double end_position = 0.0;  // |p_end - target| / max(1, |p0|, |target|)
   double end_velocity = 0.0;  // |v_end - v_target| / V
@@ -89,6 +90,7 @@ struct Extremes {
   void merge(const Extremes& o) {
     velocity = std::max(velocity, o.velocity);
     acceleration = std::max(acceleration, o.acceleration);
+    acceleration_net = std::max(acceleration_net, o.acceleration_net);
     jerk = std::max(jerk, o.jerk);
     end_position = std::max(end_position, o.end_position);
     end_velocity = std::max(end_velocity, o.end_velocity);
@@ -327,7 +329,10 @@ inline Finding check_limits(const nc::Profile& prof, const nc::Limits& l, const 
         // And a inside a segment is a + j·tau, rounded to a few ulp of its largest term.
         double slack = a_round;
         if (std::fabs(advance(s, tau).v) <= 4.0 * dv && aa > 0.0) slack += s_j * dv / aa;
-        if (ext != nullptr) ext->acceleration = std::max(ext->acceleration, aa / allowed - 1.0);
+        if (ext != nullptr) {
+          ext->acceleration = std::max(ext->acceleration, aa / allowed - 1.0);
+          ext->acceleration_net = std::max(ext->acceleration_net, (aa - slack) / allowed - 1.0);
+        }
         if (aa > allowed * (1.0 + tol.limit) + slack)
           return {Check::kAcceleration, i, s.t0 + tau, s.a + tau * s.j, allowed};
       }
