@@ -180,6 +180,88 @@ struct Adapter<fb::MC_NewPosAndVelo> {
   }
 };
 
+// Position compensation runs beside the axis's job: its Active follows its own answer, not
+// CmdNo, and it ends early by a compensation stop (it cannot be taken over by another
+// MC_MoveSuperImposed: the NC refuses that with 0x4245).
+template <>
+struct Adapter<fb::MC_MoveSuperImposed> {
+  static constexpr plc::CommandType kType = plc::CommandType::kMoveSuperImposed;
+  static constexpr bool kHasDone = true;
+  static constexpr bool kAbortable = true;
+  static constexpr bool kHasActive = true;
+  static constexpr bool kHasInput = true;
+  static constexpr bool kBesideJob = true;  // never takes CmdNo
+  static void prepare(fb::MC_MoveSuperImposed& b) {
+    b.Distance = 250.0;
+    b.VelocityDiff = 300.0;
+    b.Acceleration = 500.0;
+    b.Deceleration = 1000.0;
+    b.VelocityProcess = 2000.0;
+    b.Length = 5000.0;
+  }
+  static void set_input(fb::MC_MoveSuperImposed& b, double x) { b.Distance = x; }
+  static double sent(const plc::Command& c) { return c.position; }
+  static Outputs view(const fb::MC_MoveSuperImposed& b) {
+    return {b.Busy, b.Active, b.Done, false, b.CommandAborted, b.Error, b.ErrorID};
+  }
+  // Ends the running compensation early: a compensation stop.
+  static void take_over(plc::AXIS_REF& axis) {
+    plc::Command stop;
+    stop.type = plc::CommandType::kAbortSuperposition;
+    REQUIRE(axis.Mailbox.post(stop) != 0);
+  }
+};
+
+template <>
+struct Adapter<fb::MC_AbortSuperposition> {
+  static constexpr plc::CommandType kType = plc::CommandType::kAbortSuperposition;
+  static constexpr bool kHasDone = true;
+  static constexpr bool kAbortable = false;
+  static constexpr bool kHasActive = false;
+  static constexpr bool kHasInput = false;
+  static void prepare(fb::MC_AbortSuperposition&) {}
+  // A compensation runs for the block to stop.
+  static void arrange(ScriptedNc& nc) { nc.start_compensation(); }
+  static void set_input(fb::MC_AbortSuperposition&, double) {}
+  static double sent(const plc::Command&) { return 0.0; }
+  static Outputs view(const fb::MC_AbortSuperposition& b) {
+    return {b.Busy, false, b.Done, false, false, b.Error, b.ErrorID};
+  }
+};
+
+template <>
+struct Adapter<fb::MC_ExtSetPointGenEnable> {
+  static constexpr plc::CommandType kType = plc::CommandType::kExtSetPointGenEnable;
+  static constexpr bool kHasDone = true;
+  static constexpr bool kAbortable = false;
+  static constexpr bool kHasActive = false;
+  static constexpr bool kHasInput = true;
+  static void prepare(fb::MC_ExtSetPointGenEnable& b) {
+    b.Position = 1500.0;
+    b.PositionType = fb::POSITIONTYPE_ABSOLUTE;
+  }
+  static void set_input(fb::MC_ExtSetPointGenEnable& b, double x) { b.Position = x; }
+  static double sent(const plc::Command& c) { return c.position; }
+  static Outputs view(const fb::MC_ExtSetPointGenEnable& b) {
+    return {b.Busy, false, b.Done, false, false, b.Error, b.ErrorID};
+  }
+};
+
+template <>
+struct Adapter<fb::MC_ExtSetPointGenDisable> {
+  static constexpr plc::CommandType kType = plc::CommandType::kExtSetPointGenDisable;
+  static constexpr bool kHasDone = true;
+  static constexpr bool kAbortable = false;
+  static constexpr bool kHasActive = false;
+  static constexpr bool kHasInput = false;
+  static void prepare(fb::MC_ExtSetPointGenDisable&) {}
+  static void set_input(fb::MC_ExtSetPointGenDisable&, double) {}
+  static double sent(const plc::Command&) { return 0.0; }
+  static Outputs view(const fb::MC_ExtSetPointGenDisable& b) {
+    return {b.Busy, false, b.Done, false, false, b.Error, b.ErrorID};
+  }
+};
+
 // Every Execute-type block; those among them that start motion (they have Active,
 // CommandAborted and a latched input besides Execute); the online changes of a running motion
 // (CommandAborted and a latched input, no Active); and both together.
@@ -188,7 +270,30 @@ struct Adapter<fb::MC_NewPosAndVelo> {
       fb::MC_Stop
 #define FBTEST_ONLINE_BLOCKS fb::MC_NewPos, fb::MC_NewPosAndVelo
 #define FBTEST_ABORTABLE_BLOCKS FBTEST_MOTION_BLOCKS, FBTEST_ONLINE_BLOCKS
-#define FBTEST_EXECUTE_BLOCKS FBTEST_ABORTABLE_BLOCKS, fb::MC_Reset
+// Blocks whose command runs beside the axis's job (Busy and Active while it runs, Done or
+// CommandAborted at its end) without taking the axis from another block.
+#define FBTEST_BESIDE_JOB_BLOCKS fb::MC_MoveSuperImposed
+// Blocks the NC answers in the cycle it takes their command.
+#define FBTEST_INSTANT_BLOCKS \
+  fb::MC_Reset, fb::MC_AbortSuperposition, fb::MC_ExtSetPointGenEnable, fb::MC_ExtSetPointGenDisable
+#define FBTEST_EXECUTE_BLOCKS \
+  FBTEST_ABORTABLE_BLOCKS, FBTEST_BESIDE_JOB_BLOCKS, FBTEST_INSTANT_BLOCKS
+
+// The command runs beside the axis's job (position compensation): it never takes CmdNo.
+template <class B>
+constexpr bool beside_job() {
+  if constexpr (requires { Adapter<B>::kBesideJob; }) {
+    return Adapter<B>::kBesideJob;
+  } else {
+    return false;
+  }
+}
+
+// The number the scripted NC runs the block's job under.
+template <class B>
+uint16_t running_number(const ScriptedNc& nc) {
+  return beside_job<B>() ? nc.compensating() : nc.executing();
+}
 
 // The block shows its command running: Active where the block has it, else Busy.
 template <class B>
@@ -209,7 +314,7 @@ void check_every_call_rules(const Outputs& o, const plc::AXIS_REF& axis, uint16_
   REQUIRE(int{o.active} + results <= 1);
   // Active only while the axis executes this block's command and the NC runs it.
   const plc::CommandState state = axis.Mailbox.answer(number).state;
-  const bool runs = number != 0 && axis.NcToPlc.CmdNo == number &&
+  const bool runs = number != 0 && (beside_job<B>() || axis.NcToPlc.CmdNo == number) &&
                     (state == plc::CommandState::kActive || state == plc::CommandState::kReached);
   if constexpr (Adapter<B>::kHasActive) {
     REQUIRE(o.active == (o.busy && runs));
@@ -233,7 +338,10 @@ struct Bench {
   B block{};
   std::size_t calls = 0;
 
-  Bench() { Adapter<B>::prepare(block); }
+  Bench() {
+    if constexpr (requires { Adapter<B>::arrange(nc); }) Adapter<B>::arrange(nc);
+    Adapter<B>::prepare(block);
+  }
 
   Outputs call() {
     block(axis);

@@ -66,9 +66,13 @@ void produce(Bench<B>& b, B& other, Outcome o) {
     case Outcome::kAborted:
       b.nc.cycle();
       REQUIRE(shows_running<B>(b.call()));
-      Adapter<B>::prepare(other);
-      other.Execute = true;
-      other(b.axis);
+      if constexpr (requires { Adapter<B>::take_over(b.axis); }) {
+        Adapter<B>::take_over(b.axis);
+      } else {
+        Adapter<B>::prepare(other);
+        other.Execute = true;
+        other(b.axis);
+      }
       b.nc.cycle();
       break;
   }

@@ -8,7 +8,7 @@
 TEMPLATE_TEST_CASE(
     "changing an input while Busy changes nothing: the command keeps the value "
     "of the rising edge",
-    "[fb][rules]", FBTEST_ABORTABLE_BLOCKS) {
+    "[fb][rules]", FBTEST_ABORTABLE_BLOCKS, FBTEST_BESIDE_JOB_BLOCKS) {
   using A = fbtest::Adapter<TestType>;
   fbtest::Bench<TestType> b;
 
@@ -31,7 +31,7 @@ TEMPLATE_TEST_CASE(
 TEMPLATE_TEST_CASE(
     "changing an input while the result shows starts nothing; the next rising "
     "edge sends the new value",
-    "[fb][rules]", FBTEST_ABORTABLE_BLOCKS) {
+    "[fb][rules]", FBTEST_ABORTABLE_BLOCKS, FBTEST_BESIDE_JOB_BLOCKS) {
   using A = fbtest::Adapter<TestType>;
   fbtest::Bench<TestType> b;
 

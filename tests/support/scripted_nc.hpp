@@ -43,6 +43,17 @@ class ScriptedNc {
     ++axis_.NcToPlc.CycleCounter;
   }
 
+  // Test set-up: a position compensation runs, as if an MC_MoveSuperImposed had been taken —
+  // without a trace in taken(). Returns its command number.
+  uint16_t start_compensation() {
+    plc::Command command;
+    command.type = plc::CommandType::kMoveSuperImposed;
+    axis_.Mailbox.post(command);
+    axis_.Mailbox.take(command);
+    handle(command);
+    return command.number;
+  }
+
   // The next command taken (of any type) is refused with `code`.
   void refuse_next(plc::ErrorCode code) { refusals_.push_back(code); }
 
