@@ -3,7 +3,8 @@
 #   1. a Release build with warnings as errors → ctest (every test, the install checks too);
 #   2. a build under AddressSanitizer + UndefinedBehaviorSanitizer → ctest again (tests that
 #      count allocations and the install checks are left out there).
-# Exits non-zero when a build or a test fails; the last line sums up both runs. No benchmarks.
+# Exits non-zero when a build or a test fails. The last line sums up both runs as
+# "run_tests: N passed, M failed". No benchmarks.
 set -uo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -50,12 +51,25 @@ UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}" \
   -DCMAKE_BUILD_TYPE=Debug \
   "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g" || failed=1
 
+# Totals over both runs; a run that did not get to ctest counts as one failure.
+total_passed=0
+total_failed=0
+for summary in "${result_release}" "${result_sanitize}"; do
+  if [[ "${summary}" =~ ([0-9]+)\ tests\ failed\ out\ of\ ([0-9]+) ]]; then
+    total_failed=$((total_failed + BASH_REMATCH[1]))
+    total_passed=$((total_passed + BASH_REMATCH[2] - BASH_REMATCH[1]))
+  else
+    total_failed=$((total_failed + 1))
+  fi
+done
+
 echo "=== summary ==="
 echo "release:   ${result_release}"
 echo "sanitize:  ${result_sanitize}"
 if [[ ${failed} -eq 0 ]]; then
-  echo "run_tests: PASSED (release: ${result_release}; sanitize: ${result_sanitize})"
+  echo "run_tests: PASSED both runs (Release, then ASan+UBSan)"
 else
-  echo "run_tests: FAILED (release: ${result_release}; sanitize: ${result_sanitize})"
+  echo "run_tests: FAILED (see above)"
 fi
+echo "run_tests: ${total_passed} passed, ${total_failed} failed"
 exit "${failed}"
