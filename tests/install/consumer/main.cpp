@@ -4,8 +4,7 @@
 #include <cstdio>
 
 #include <fb/fb.hpp>
-#include <nc_core/cycle_driver.hpp>
-#include <nc_core/kernel.hpp>
+#include <nc_core/nc_core.hpp>
 
 int main() {
   nc::Kernel kernel;  // NC cycle 1 ms (KernelConfig)
