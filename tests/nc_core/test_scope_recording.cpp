@@ -1,6 +1,9 @@
 // The scope samples the chosen signals every call, into storage sized at set-up, and writes the
 // recording as CSV and JSON.
+#include <filesystem>
+#include <fstream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -162,4 +165,33 @@ TEST_CASE("scope JSON carries time, channel names, axes, signals, units and valu
   CHECK(channel.at("values") == nlohmann::json::array({0.25, 0.25}));
   // The text written to a file parses back to the same document.
   CHECK(nlohmann::json::parse(doc.dump(1)) == doc);
+}
+
+TEST_CASE("scope files are written into a new folder, read back, and a bad path is reported") {
+  plc::AXIS_REF axis;
+  nc::Scope scope(4);
+  scope.add_signal(axis, "Axis1", nc::Signal::kActPos);
+  axis.NcToPlc.ActPos = 2000.0;
+  scope.record(0.5);
+  const auto dir = std::filesystem::temp_directory_path() / "ncsdk_test_scope_files";
+  std::filesystem::remove_all(dir);
+  scope.write_csv(dir / "a" / "trace.csv");
+  scope.write_json(dir / "b" / "trace.json");
+
+  std::ifstream csv(dir / "a" / "trace.csv");
+  std::stringstream csv_text;
+  csv_text << csv.rdbuf();
+  CHECK(csv_text.str() == "time [s],Axis1.ActPos [mm]\n0.5,2000\n");
+  std::ifstream json(dir / "b" / "trace.json");
+  CHECK(nlohmann::json::parse(json) == scope.to_json());
+
+  // A folder cannot be made below a regular file: the error names the path.
+  const auto blocked = dir / "a" / "trace.csv" / "inner.csv";
+  try {
+    scope.write_csv(blocked);
+    FAIL("no error for " << blocked);
+  } catch (const std::runtime_error& e) {
+    CHECK(std::string(e.what()).find("trace.csv") != std::string::npos);
+  }
+  std::filesystem::remove_all(dir);
 }
