@@ -16,6 +16,5 @@ cmake -S "${root}" -B "${build}" -DCMAKE_BUILD_TYPE=Release \
   -DNCSDK_BUILD_TESTS=OFF -DNCSDK_BUILD_SAMPLES=ON -DNCSDK_BUILD_BENCHMARKS=OFF > /dev/null
 cmake --build "${build}" -j "${jobs}" --target move_axis
 
+# The sample prints its summary and where it wrote the trace and the plot.
 "${build}/samples/move_axis/move_axis" "${out}"
-echo "trace: ${out}/move_axis.csv"
-echo "plot:  ${out}/move_axis.svg"
