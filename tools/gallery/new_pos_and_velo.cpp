@@ -55,6 +55,8 @@ Figure npv(const std::filesystem::path& out, const Case& c) {
         return (move.Done || change_done) && rig.at_rest() && rig.axis().NcToPlc.SetPos == c.epos;
       });
   rig.expect(rig.axis().NcToPlc.SetPos == c.epos, "ends exactly at EPos");
+  rig.expect(change_done, "MC_NewPosAndVelo Done");
+  rig.expect(move.Done, "MC_MoveAbsolute Done at EPos");
   rig.expect(c.reverses ? min_velocity < 0.0 : min_velocity == 0.0,
              c.reverses ? "stops and returns" : "never reverses");
   rig.expect_near(late_velocity, c.cruise, 1e-6, "set velocity at " + num(c.late) + " s");

@@ -7,7 +7,10 @@
 #include <string>
 
 #include "fb/mc_move_absolute.hpp"
+#include "fb/mc_power.hpp"
 #include "fb/mc_set_override.hpp"
+#include "nc_core/scope.hpp"
+#include "nc_core/svg_plot.hpp"
 #include "scenarios.hpp"
 
 namespace gallery {
@@ -57,6 +60,89 @@ Figure run(const std::filesystem::path& out, const std::string& name, const std:
 
 void expect(Figure& f, bool ok, const std::string& what) {
   if (!ok) f.problems.push_back(what);
+}
+
+// The four override types of seed 000 §2.2 side by side: four axes, one per
+// AxisConfig::override_type, each moving 0 → 800 mm at V 2000 mm/s (not reachable: the table
+// at 100 % tops out below V, Dynamics 3.3), starting at 30 % and raised to 100 % at 1.0 s, when
+// the remaining distance is too short for the new level. Types 1 and 3 scale the reduced level
+// of the start, 2 and 4 the user's V; types 1 and 2 keep the old table when the new level is not
+// reachable, 3 and 4 take the best level that is.
+Figure override_types(const std::filesystem::path& out) {
+  constexpr double kCycle = 0.001;
+  constexpr double kEnd = 800.0;
+  constexpr double kSeconds = 4.0;
+  nc::Kernel kernel(nc::KernelConfig{kCycle});
+  struct Lane {
+    plc::AXIS_REF* axis = nullptr;
+    std::string name;
+    fb::MC_Power power;
+    fb::MC_MoveAbsolute move;
+    fb::MC_SetOverride set;
+  };
+  std::vector<Lane> lanes(4);
+  nc::Scope scope(static_cast<std::size_t>(kSeconds / kCycle) + 4);
+  for (int type = 1; type <= 4; ++type) {
+    Lane& lane = lanes[static_cast<std::size_t>(type - 1)];
+    nc::AxisConfig config = seed_axis();
+    lane.name = "Type" + std::to_string(type);
+    config.name = lane.name;
+    config.override_type = type;
+    lane.axis = &kernel.add_axis(config);
+    lane.move.Position = kEnd;
+    lane.move.Velocity = 2000.0;
+    scope.add_signal(*lane.axis, lane.name, nc::Signal::kSetPos);
+    scope.add_signal(*lane.axis, lane.name, nc::Signal::kSetVelo);
+  }
+  scope.add_signal(*lanes[0].axis, lanes[0].name, nc::Signal::kOverride);
+  nc::CycleDriver driver(kernel);
+  Figure f;
+  f.name = "override_types";
+  f.title = "Override types 1\u20134: 30 % \u2192 100 % at 1.0 s, V 2000 mm/s, 0 \u2192 800 mm";
+  f.file = out / (f.name + ".svg");
+  driver.add_task("Scope", kCycle, [&] { scope.record(kernel.time()); });
+  driver.add_task("PlcTask", kCycle, [&] {
+    for (Lane& lane : lanes) {
+      lane.power.Enable = lane.power.Enable_Positive = lane.power.Enable_Negative = true;
+      lane.power(*lane.axis);
+      lane.set.Enable = true;
+      lane.set.VelFactor = kernel.time() < 1.0 ? 0.3 : 1.0;
+      lane.set(*lane.axis);
+      lane.move.Execute = lane.power.Status;
+      lane.move(*lane.axis);
+      if (lane.move.Error) expect(f, false, lane.name + " MC_MoveAbsolute Error");
+    }
+  });
+  driver.run_until(
+      [&] {
+        return std::all_of(lanes.begin(), lanes.end(), [](const Lane& l) { return l.move.Done; });
+      },
+      kSeconds - 0.3);
+  driver.run_for(0.2);
+  scope.record(kernel.time());
+  for (const Lane& lane : lanes) {
+    expect(f, lane.move.Done && lane.axis->NcToPlc.SetPos == kEnd, lane.name + " ends at 800 mm");
+    expect(f, lane.axis->NcToPlc.ErrorCode == 0, lane.name + " axis error");
+  }
+  const char* colours[] = {"#00008b", "#006400", "#8b0000", "#ff7f00"};
+  std::vector<nc::PlotPanel> panels(2);
+  panels[0] = {"panel-position", "Set position", "mm", {}};
+  panels[1] = {"panel-velocity", "Set velocity", "mm/s", {}};
+  for (std::size_t i = 0; i < lanes.size(); ++i) {
+    const std::string label = "override type " + std::to_string(i + 1);
+    panels[0].series.push_back(
+        {label, colours[i], scope.values(scope.find(lanes[i].name, nc::Signal::kSetPos)), 2.0});
+    panels[1].series.push_back(
+        {label, colours[i], scope.values(scope.find(lanes[i].name, nc::Signal::kSetVelo)), 2.0});
+  }
+  std::vector<double> percent;
+  for (const double o : scope.values(scope.find(lanes[0].name, nc::Signal::kOverride))) {
+    percent.push_back(o / 10'000.0);
+  }
+  panels.push_back(
+      {"panel-override", "Override", "%", {{"PlcToNc.Override", "#6a3d9a", percent, 2.0}}});
+  nc::write_svg(f.file, nc::svg_plot(scope.time(), panels, {f.title, 1000, 150}));
+  return f;
 }
 
 }  // namespace
@@ -110,6 +196,7 @@ void override_changes(const std::filesystem::path& out, Figures& figures) {
     expect(f, w[0].min == 0.0 && w[0].max == 0.0, "at rest while the override is 0 %");
     figures.push_back(f);
   }
+  figures.push_back(override_types(out));
 }
 
 }  // namespace gallery
