@@ -33,6 +33,11 @@ inline Jet operator*(double a, Jet b) noexcept {
 inline Jet operator/(Jet a, double b) noexcept {
   return {a.x / b, a.d / b, a.dd / b};
 }
+inline Jet operator/(Jet a, Jet b) noexcept {
+  const double x = a.x / b.x;
+  const double d = (a.d - x * b.d) / b.x;
+  return {x, d, (a.dd - 2.0 * d * b.d - x * b.dd) / b.x};
+}
 inline Jet sqrt(Jet a) noexcept {
   const double r = std::sqrt(a.x);
   if (!(r > 0.0)) return {r, 0.0, 0.0};
@@ -73,6 +78,8 @@ T stop_distance_of(T v, T a, const Bounds& b) noexcept {
   } else {
     const T meet2 = 0.5 * (a * a - (2.0 * jerk) * v);
     if (value(meet2) <= k_tol) {
+      // stop_change's landing ramp: t = -2v/a with the adjusted jerk covers t v / 3.
+      if (av < 0.0 && vv > 0.0) return s * ((-2.0 / 3.0) * (v * v / a));
       const T t = constant(a, 0.0) - a / jerk;
       return s * (t * (v + t * (0.5 * a + (jerk / 6.0) * t)));
     }

@@ -96,7 +96,18 @@ int upward(double v, double a, double v1, const Bounds& b, Piece* out) noexcept 
     const double meet2 = 0.5 * (a * a - 2.0 * jerk * (v - vk));
     // Within rounding of the final curve (v_nat = v1) the rise ends at a = 0 exactly: the
     // remaining time must not jump with the square root of the rounding.
-    const double a_meet = final_curve && meet2 <= k_tol ? 0.0 : std::sqrt(std::max(meet2, 0.0));
+    const bool on_final = final_curve && meet2 <= k_tol;
+    if (on_final && a < 0.0 && v > v1) {
+      // Coming down onto v1 with a slightly forced overshoot: one ramp that lands exactly, its
+      // jerk a^2 / 2(v - v1) above J by at most ~4 kRel. Along that ramp the overshoot stays the
+      // same fraction of v - v1 and of k_tol, so every state sampled on it decides the same way
+      // (re-planning gives the rest of it); a ramp at J would keep the absolute overshoot while
+      // k_tol shrinks, and the decision would flip part-way.
+      const double t = 2.0 * (v1 - v) / a;
+      put(t, -a / t, 0.0, v1, true);
+      return n;
+    }
+    const double a_meet = on_final ? 0.0 : std::sqrt(std::max(meet2, 0.0));
     const double t_curve = std::max((a_meet - a) / jerk, 0.0);
     double t_zero = INFINITY;
     if (neg) {
@@ -147,12 +158,23 @@ int stop_change(double v, double a, const Bounds& b, Piece* out) noexcept {
     const double meet2 = 0.5 * (a * a - 2.0 * jerk * v);
     if (meet2 <= k_tol) {
       // On the final curve already (v_nat = 0 within rounding): a rises to 0 exactly at v = 0.
-      put(-a / jerk, jerk, 0.0, 0.0);
+      // A tiny forced overshoot (a < 0 < v, v_nat < 0) is absorbed by a jerk above J by at most
+      // ~4 kRel, so that the ramp lands exactly: on it |v_nat| / v stays constant, so every
+      // state sampled on the stop takes this same branch (see upward()).
+      if (a < 0.0 && v > 0.0) {
+        const double t = -2.0 * v / a;
+        put(t, -a / t, 0.0, 0.0);
+      } else {
+        put(-a / jerk, jerk, 0.0, 0.0);
+      }
       return n;
     }
     const double a_meet = std::sqrt(meet2);
+    // The last ramp starts on the final curve v = -a^2 / 2J: its start velocity is set from that
+    // (rounding of its own size) rather than integrated (rounding of the start's speed), so a
+    // state sampled on it re-plans to the same ramp, not to a reversal of the rounding's size.
     if (a_meet <= am) {
-      put((a_meet - a) / jerk, jerk, a_meet, NAN);
+      put((a_meet - a) / jerk, jerk, a_meet, -0.5 * a_meet * a_meet / jerk);
       put(a_meet / jerk, -jerk, 0.0, 0.0);
       return n;
     }
@@ -162,7 +184,7 @@ int stop_change(double v, double a, const Bounds& b, Piece* out) noexcept {
     a = am;
   }
   const double v_curve = -am * am / (2.0 * jerk);
-  put((v_curve - v) / am, 0.0, am, NAN);
+  put((v_curve - v) / am, 0.0, am, v_curve);
   put(am / jerk, -jerk, 0.0, 0.0);
   return n;
 }
