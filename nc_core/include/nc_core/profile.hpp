@@ -7,6 +7,10 @@
 //
 // Limits are path-relative (seed 000 §2.1, SPEC B2): while |v| grows |a| <= acceleration (A+),
 // while |v| shrinks |a| <= deceleration (A-), always |v| <= velocity (V) and |da/dt| <= jerk (J).
+// One exception of rounding size: a state whose ramp to a = 0 at J would pass the end velocity by
+// less than 1e-13 of the motion's own scale lands on it with one ramp whose jerk is above J by at
+// most about 4e-13 (relative), instead of a reversal of that size (every state on that ramp then
+// plans the same ramp, so re-planning gives the rest of the profile).
 #pragma once
 
 #include <cstddef>
