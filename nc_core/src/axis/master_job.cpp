@@ -1,6 +1,7 @@
 #include "axis/master_job.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace nc::detail {
 
@@ -8,20 +9,122 @@ namespace {
 // A sample time this close below the duration counts as the end: k·T and a planned duration
 // that are equal on paper may differ in the last bits.
 constexpr double kEndTolerance = 1e-9;  // s
+// An acceleration this small is "a = 0" when looking for a held velocity level (the planner sets
+// the acceleration at the end of a velocity change exactly; this absorbs the sign of -0.0 and
+// the rounding of a sampled start state).
+constexpr double kZeroAcceleration = 1e-6;  // mm/s²
+// Relative tolerance of "|v| = level".
+constexpr double kLevelTolerance = 1e-9;
+
+double sign_of(double x) noexcept {
+  return x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0);
+}
+
+double end_acceleration(const Segment& s) noexcept {
+  return s.a + s.j * s.duration;
+}
+
+double end_velocity(const Segment& s) noexcept {
+  return s.v + s.a * s.duration + 0.5 * s.j * s.duration * s.duration;
+}
+
+// Calls f(v, a) at every point of interest of a table: its start, each segment start, the zero
+// of a inside a segment, and its end.
+template <class F>
+void for_each_extremum(const Profile& profile, F&& f) noexcept {
+  const KinematicState start = profile.start_state();
+  f(start.v, start.a);
+  for (std::size_t i = 0; i < profile.segment_count(); ++i) {
+    const Segment& s = profile.segment(i);
+    f(s.v, s.a);
+    if (s.j != 0.0) {
+      const double t = -s.a / s.j;
+      if (t > 0.0 && t < s.duration) f(s.v + s.a * t + 0.5 * s.j * t * t, 0.0);
+    }
+  }
+  const KinematicState end = profile.final_state();
+  f(end.v, end.a);
+}
+
 }  // namespace
+
+double brake_start(const Profile& profile) noexcept {
+  const std::size_t n = profile.segment_count();
+  double start = profile.duration();
+  for (std::size_t i = n; i-- > 0;) {
+    const Segment& s = profile.segment(i);
+    const double v_end = end_velocity(s);
+    const double dir = s.v != 0.0 ? sign_of(s.v) : sign_of(v_end);
+    const double a0 = dir * s.a;
+    const double a1 = dir * end_acceleration(s);
+    const bool cruise = s.j == 0.0 && std::abs(s.a) <= kZeroAcceleration;
+    if (!cruise && dir != 0.0 && a0 <= kZeroAcceleration && a1 <= kZeroAcceleration) {
+      start = s.t0;  // |v| does not grow on this segment: still braking
+      continue;
+    }
+    // A segment on which the acceleration falls through 0 (the planner may merge "acceleration
+    // decrease" and "deceleration increase"): the braking starts at the zero of a.
+    if (dir * s.j < 0.0 && a0 > 0.0 && a1 < 0.0) start = s.t0 + s.a / -s.j;
+    break;
+  }
+  return start;
+}
+
+double peak_speed(const Profile& profile) noexcept {
+  double peak = 0.0;
+  for_each_extremum(profile, [&](double v, double) { peak = std::max(peak, std::abs(v)); });
+  return peak;
+}
+
+bool reaches_level(const Profile& profile, double level) noexcept {
+  bool reached = false;
+  const double tolerance = kLevelTolerance * std::max(1.0, level);
+  for_each_extremum(profile, [&](double v, double a) {
+    if (std::abs(a) <= kZeroAcceleration && std::abs(std::abs(v) - level) <= tolerance) {
+      reached = true;
+    }
+  });
+  return reached;
+}
+
+double reduced_level(const Profile& profile, double velocity) noexcept {
+  const double peak = peak_speed(profile);
+  return peak >= velocity * (1.0 - kLevelTolerance) ? velocity : peak;
+}
 
 void MasterJob::start(JobKind kind, uint16_t number, const Profile& profile, double target,
                       double target_velocity, const Limits& limits) noexcept {
-  profile_ = profile;
   kind_ = kind;
   number_ = number;
+  target_ = target;
+  target_velocity_ = target_velocity;
+  limits_ = limits;
+  reduced_velocity_ = limits.velocity;
+  direction_ = target_velocity < 0.0 ? -1.0 : 1.0;
+  handled_override_ = override_;
+  activation_ = Activation{};
+  install(profile, true);
+}
+
+void MasterJob::install(const Profile& profile, bool final) noexcept {
+  profile_ = profile;
   k_ = 0;
   ended_ = false;
   reached_ = false;
-  target_ = target;
-  target_velocity_ = target_velocity;
   jerk_ = 0.0;
-  limits_ = limits;
+  final_ = final;
+  state_ = profile.start_state();
+  has_brake_phase_ = final && kind_ == JobKind::kPosition;
+  brake_start_ = has_brake_phase_ ? brake_start(profile) : 0.0;
+}
+
+void MasterJob::replan(const Profile& profile, bool final) noexcept {
+  install(profile, final);
+}
+
+void MasterJob::mark_brake_phase() noexcept {
+  has_brake_phase_ = true;
+  brake_start_ = 0.0;
 }
 
 void MasterJob::clear() noexcept {
@@ -30,31 +133,54 @@ void MasterJob::clear() noexcept {
   k_ = 0;
   ended_ = false;
   reached_ = false;
+  final_ = true;
+  has_brake_phase_ = false;
   jerk_ = 0.0;
+  activation_ = Activation{};
+}
+
+void MasterJob::set_levels(double user_velocity, double reduced_velocity,
+                           double direction) noexcept {
+  limits_.velocity = user_velocity;
+  reduced_velocity_ = reduced_velocity;
+  direction_ = direction < 0.0 ? -1.0 : 1.0;
+}
+
+bool MasterJob::in_brake_phase(double cycle_time) const noexcept {
+  if (!has_brake_phase_) return false;
+  if (ended_) return true;
+  const double t = static_cast<double>(k_) * cycle_time;
+  return t >= brake_start_ - kEndTolerance * std::max(1.0, brake_start_);
 }
 
 KinematicState MasterJob::advance(double cycle_time) noexcept {
   if (ended_) {
     jerk_ = 0.0;
-    return profile_.final_state();
+    state_ = profile_.final_state();
+    return state_;
   }
   ++k_;
   const double t = static_cast<double>(k_) * cycle_time;
   const double end = profile_.duration();
   const bool at_end = t >= end - kEndTolerance * std::max(1.0, end);
   if (kind_ == JobKind::kVelocity) {
-    // The hold goes on past the end of the profile: at() extrapolates it.
-    if (at_end) reached_ = true;
+    // The hold goes on past the end of the profile: at() extrapolates it. A hold at 0 (override
+    // 0) is not "reached": InVelocity means moving at the commanded level.
+    if (at_end) reached_ = profile_.final_state().v != 0.0;
     jerk_ = at_end ? 0.0 : profile_.jerk_at(t);
-    return profile_.at(t);
+    state_ = profile_.at(t);
+    return state_;
   }
   if (at_end) {
-    ended_ = true;
+    // A rest for override 0 holds its end but does not end the job.
+    ended_ = final_;
     jerk_ = 0.0;
-    return profile_.final_state();
+    state_ = profile_.final_state();
+    return state_;
   }
   jerk_ = profile_.jerk_at(t);
-  return profile_.at(t);
+  state_ = profile_.at(t);
+  return state_;
 }
 
 }  // namespace nc::detail
