@@ -163,7 +163,8 @@ TEST_CASE(
   const plc::Command vel = kt::move_velocity(1000.0, 1);
   for (const Bad& b : bad_dynamics(vel, "MoveVelocity"))
     bads.push_back(b);
-  for (int32_t d : {0, 2, 4, -3, 128}) {
+  // 4 (MC_Current_Direction) is valid while moving; refused at standstill (test_move_velocity).
+  for (int32_t d : {0, 2, 5, -3, 128}) {
     plc::Command c = vel;
     c.direction = d;
     bads.push_back(

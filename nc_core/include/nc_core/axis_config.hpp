@@ -79,6 +79,11 @@ struct AxisConfig {
   double position_range_window = 5.0;  // mm, > 0
 
   double standstill_window = 1e-3;  // mm/s, > 0: |v_act| below it counts as not moving
+
+  // External setpoint generation (seed 000 §2.6 "Optimization options"): "delay time between
+  // velocity and position". Each taken packet is carried this far ahead along its velocity and
+  // acceleration, compensating the transport dead time of the cyclic interface.
+  double ext_setpoint_delay = 0.0;  // s, 0 … 1 (0 = none)
 };
 
 }  // namespace nc

@@ -168,6 +168,10 @@ void visit_fields(Config& c, Visitor&& v) {
 
   v(FieldInfo{"standstill_window", "mm/s", "actual speed below this counts as not moving"},
     c.standstill_window, kPositive);
+
+  v(FieldInfo{"ext_setpoint_delay", "s",
+              "delay time between velocity and position: external packets carried ahead by it"},
+    c.ext_setpoint_delay, closed_range(0.0, 1.0));
 }
 
 }  // namespace nc

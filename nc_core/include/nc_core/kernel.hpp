@@ -24,20 +24,29 @@
 //   so an aborting command blends without a jump (seed 000 §2.1; TwinCAT does the same).
 //   MoveRelative adds its distance to the current set position.
 // - Validation order of a start (the first broken rule gives the code): axis in error
-//   (kAxisInErrorState), locked (0x42EF), buffer mode other than aborting
-//   (kBufferModeNotSupported), position not finite (kPositionNotFinite), other parameter not finite
-//   (kParameterNotFinite), V <= 0 (0x4231), V above max or reference velocity (0x4221), A+ / A- / J
-//   < 0 (0x422F / 0x4230 / 0x422E; 0 = axis default), direction (kDirectionInvalid), target outside
-//   the enabled software limits (0x4222; MoveVelocity standing on or beyond a limit and running
-//   outward: 0x4461 / 0x4460), controller or feed enable for the direction missing (0x4223).
+//   (kAxisInErrorState), locked (0x42EF), external setpoints enabled (0x4239), buffer mode other
+//   than aborting (kBufferModeNotSupported), position not finite (kPositionNotFinite), other
+//   parameter not finite (kParameterNotFinite), V <= 0 (0x4231), V above max or reference
+//   velocity (0x4221), A+ / A- / J < 0 (0x422F / 0x4230 / 0x422E; 0 = axis default), direction
+//   (kDirectionInvalid), target outside the enabled software limits (0x4222; MoveVelocity
+//   standing on or beyond a limit and running outward: 0x4461 / 0x4460), controller or feed
+//   enable for the direction missing (0x4223).
 // - MoveVelocity's direction: +1 or MC_Positive_Direction (1) forward; -1 or
-//   MC_Negative_Direction (3) backward; anything else (MC_Current_Direction, …) is refused.
+//   MC_Negative_Direction (3) backward; MC_Current_Direction (4) the direction of the set
+//   velocity, refused (kDirectionInvalid) at standstill; anything else is refused. kReached
+//   (InVelocity) once the velocity level in force (with the override, not 0) is reached; it
+//   stays kReached when the override changes the level later.
 // - A positioning start at standstill shorter than one encoder increment (or of length 0) does
 //   not start: the command is answered kDone at once, NcToPlc.Warning = 0x4224, and nothing else
 //   changes (a job still waiting for its target window keeps running) — seed 000 §2.1.
-// - Halt and Stop: deceleration / jerk 0 = those of the running motion, or the axis defaults at
-//   standstill. Both need the controller enable (0x4223) and are refused on an axis in error.
-//   Halt is a motion command (locked out by a Stop); a Stop may replace a Stop.
+// - Halt and Stop (B4, seed 000 §2.2 "Emergency stop"): their deceleration and jerk replace the
+//   running motion's (a Halt's / Stop's own when one runs; the axis defaults at standstill) only
+//   when BOTH are genuinely larger; otherwise (also for 0) the running motion's are used. Both
+//   need the controller enable (0x4223) and are refused on an axis in error. Halt is a motion
+//   command (locked out by a Stop); a Stop may replace a Stop (and so sharpen it with larger
+//   values). In the brake phase a Halt / Stop is accepted (the positioning is kAborted, the stop
+//   takes CmdNo) but plans with the running values — the braking that runs goes on — and its own
+//   braking counts as brake phase too, so no later stop sharpens it.
 // - Job ends: positioning kDone when set-value generation has ended and InTargetPosition (or the
 //   target window is off); Halt/Stop kDone when the set velocity is 0; MoveVelocity kReached.
 // - Axis errors (A6): following error 0x4550; set position passing an enabled software limit
@@ -52,9 +61,77 @@
 // - Window and filter times count samples, each worth one NC cycle: the following error is
 //   raised once it has been above the limit for more samples than fit in the filter time;
 //   InTargetPosition once the window has held for window-time's worth of samples (at least 1).
-// - Override (PlcToNc.Override) is read into the job every cycle but not yet applied (issue 4).
-//   Modulo starts, online changes, compensation, coupling, external setpoints and homing are
-//   refused with kUnknownCommand until their issues land.
+// - Position compensation (MC_MoveSuperImposed; B7, seed 000 §2.5): the trapezoid runs in time
+//   over T = L / VP (L cut to a positioning's remaining distance), its velocity scaled every
+//   cycle by min(1, |v| / VP), v the basic motion's set velocity (so override and stops act on
+//   it). D refers to the direction of travel (> 0: further). It needs a running positioning or
+//   MoveVelocity (0x424E otherwise); refused on encoder axes (0x4040), in error, while one runs
+//   (0x4245), during Halt / Stop (0x4242), under the Stop lock (0x42EF), for bad parameters
+//   (D == 0 0x4244, L 0x4270, VK / VP 0x4271, AK± 0x4272, not finite 0x4F01 / 0x4F02) and beside
+//   external setpoints (0x424E). It does not take CmdNo (the basic command stays the axis's); its
+//   own number is answered kActive, kDone when T has run out, kAborted when it ended early
+//   (compensation stop, the basic motion's end of path, a new motion command, which starts from
+//   the compensated set state), kError with the axis's code on an axis error. Warning 0x4243 from
+//   the start when the largest feasible D is smaller than D, else from the cycle it ends with
+//   less than D done; a new compensation clears it. NcToPlc.CompensationDistance / Length /
+//   VelocityDiff: done so far, L in use, signed peak (D's sign), kept after the end; TargetPos
+//   moves by the planned, then the done distance.
+// - MC_AbortSuperposition: kDone at once, the closing ramp runs on; 0x4246 without compensation,
+//   0x4258 in its closing ramp. MC_Halt / MC_Stop brake the basic motion and request the
+//   compensation stop; the compensation ends at the latest at their end of path.
+// - External setpoints (B8, seed 000 §2.6): Enable / Disable are answered kDone at once (no
+//   CmdNo). Enable's checks in order: axis in error, Position not finite (0x4F01), type not 1 / 2
+//   (0x4239), controller or either feed enable missing (0x4223), another type active (0x4239),
+//   compensation (0x4245), Halt / Stop running (0x4242), Stop lock (0x42EF), absolute beside a
+//   job (0x4239). While enabled, PTP starts are refused (0x4239). Relative: target = the
+//   positioning's target (or the set position) + Position. A packet is taken while the direction
+//   is ±1; the first cycle after and the disable's cycle take ExtSetPos only (v = a = 0); then
+//   the set position holds. Switched off at once by an axis error, Reset, loss of the controller
+//   enable, Halt and Stop (which brake from the set state reached); a relative offset stays on the
+//   position. A packet with NaN / inf is not taken: axis error 0x4F02, the set state runs on for
+//   that cycle and the emergency ramp starts there. Feed enables are monitored during external
+//   motion too. AxisState does not show external motion (StateDWord bit 14 does).
+//   AxisConfig::ext_setpoint_delay d ("delay time between velocity and position") carries each
+//   taken packet ahead: p + v d + a d² / 2, v + a d.
+// - Brake phase (seed 000 §2.2, §2.4): the final deceleration of a positioning's table to its
+//   target — its trailing part on which |v| only falls. Override and a due new velocity do not
+//   act in it; a stop in it does not sharpen it.
+// - Override (B3, seed 000 §2.2): PlcToNc.Override read every cycle; above 1'000'000 it is not
+//   taken (the last valid value stays; Warning 0x4238 while out of range). A change replans the
+//   running positioning / MoveVelocity from its set state at level = base · override (base: the
+//   level the 100 % table reached at the start, types 1 and 3; the user's V, types 2 and 4),
+//   reached as fast as A+ / A- / J allow, a lower one without undershoot. Types 1 / 2 keep the
+//   table when the new table would not reach the level (it never holds or touches it); 3 / 4
+//   take it. A refused change is not retried. Not during Halt / Stop / error ramps, not in the
+//   brake phase. Override 0: a positioning comes to rest on its path (a start at 0 waits at
+//   rest), stays kActive and goes on when the override rises (from a rest always, any type); a
+//   MoveVelocity goes to v = 0. NcToPlc.TargetVelo is the level in force (signed).
+// - New end position (B5, MC_NewPos = kNewPos): answered kDone when accepted; the positioning
+//   keeps CmdNo and ends kDone at the new target. Replanned from the set state with the user's
+//   V (a level not reachable at the start is reached when the new distance allows it); a target
+//   the axis cannot stop before (or has passed) gives one continuous table that reverses.
+//   Checks in order: axis in error, a Halt / Stop running or the Stop lock held (0x4242),
+//   position not finite (0x4F01), outside the software limits (0x4222), no positioning job
+//   (0x424E: standstill, MoveVelocity), compensation running (0x4245), controller / feed enable
+//   for the direction to the new target (0x4223). A re-triggered aborting MoveAbsolute gives the
+//   same motion under a new command number.
+// - New velocity and end position (B6, kNewPosAndVelo: EPos, VNew, APos): the same checks plus
+//   VNew / APos not finite (0x4F02), VNew <= 0 (0x4231), VNew above max / reference velocity
+//   (0x4221), answered kDone when accepted. The table goes to EPos with the old V at once; VNew
+//   by the seed's six cases along the direction of travel (at rest: towards the target): 1
+//   from APos on (the set position passing APos in that direction), 2 at once, 3 / 6 return
+//   with VOld, 4 never, 5 when APos is passed on the way back. VNew not reachable (the table
+//   would not hold or touch it): the level is halved towards the current speed, 8 tries, else
+//   the table is kept. A due VNew waits while the table is in its brake phase (dropped when the
+//   job ends braking). A new request replaces a pending VNew (cases 1 / 5) or deletes it (other
+//   cases, MC_NewPos). The override applies on top.
+// - Modulo start (B1, kMoveModulo, modulo factor F): the end is congruent to Position mod F; below
+//   F the nearest such end from where the axis would come to rest, in the direction (1 positive,
+//   3 negative, 2 shortest way — a tie goes positive —, 4 current, refused at standstill); at or
+//   above F, floor(|Position| / F) extra whole turns after it (shortest way: in the direction of
+//   the sign). More than 1'000'000 turns: 0x4282; other checks as MoveAbsolute.
+//   ModuloSetPos / ModuloActPos lie in [0, F).
+// - Coupling and homing are refused with kUnknownCommand until their issues land.
 #pragma once
 
 #include <cstddef>

@@ -39,18 +39,40 @@ void ServoAxis::handle(const plc::Command& command) noexcept {
     case CommandType::kMoveRelative:
       code = start_position(command);
       break;
+    case CommandType::kMoveModulo:
+      code = start_modulo(command);
+      break;
     case CommandType::kMoveVelocity:
       code = start_velocity(command);
+      break;
+    case CommandType::kNewPos:
+      code = new_position(command);
+      break;
+    case CommandType::kNewPosAndVelo:
+      code = new_position_and_velocity(command);
       break;
     case CommandType::kHalt:
     case CommandType::kStop:
       code = start_halt_or_stop(command);
+      break;
+    case CommandType::kMoveSuperImposed:
+      code = start_compensation(command);
+      break;
+    case CommandType::kAbortSuperposition:
+      code = stop_compensation(command);
+      break;
+    case CommandType::kExtSetPointGenEnable:
+      code = enable_external(command);
+      break;
+    case CommandType::kExtSetPointGenDisable:
+      code = disable_external(command);
       break;
     case CommandType::kReset:
       // Answered at once and without taking CmdNo: a reset is not a job. It also cancels an
       // MC_Stop lock (Tc2_MC2: "the locking of the axis is canceled with an MC_Reset").
       reset_error();
       locked_ = false;
+      end_external_generation();  // seed 000 §2.6: an axis reset switches it off
       ref_.Mailbox.set_answer(command.number, CommandState::kDone);
       return;
     case CommandType::kStopRelease:
@@ -58,8 +80,7 @@ void ServoAxis::handle(const plc::Command& command) noexcept {
       ref_.Mailbox.set_answer(command.number, CommandState::kDone);
       return;
     default:
-      // Modulo starts, online changes, compensation, coupling, external setpoints and homing
-      // come with later issues; until then the kernel refuses them by name.
+      // Coupling and homing come with later issues; until then the kernel refuses them by name.
       code = ErrorCode::kUnknownCommand;
       break;
   }
@@ -91,6 +112,9 @@ ErrorCode ServoAxis::check_dynamics(const plc::Command& command, Limits& limits)
 ErrorCode ServoAxis::start_position(const plc::Command& command) noexcept {
   if (error_ != ErrorCode::kNone) return ErrorCode::kAxisInErrorState;
   if (locked_) return ErrorCode::kMotionCommandsLocked;
+  if (const ErrorCode code = check_start_with_superpositions(); code != ErrorCode::kNone) {
+    return code;
+  }
   if (command.buffer_mode != 0) return ErrorCode::kBufferModeNotSupported;
   if (!finite(command.position)) return ErrorCode::kPositionNotFinite;
   Limits limits;
@@ -99,6 +123,11 @@ ErrorCode ServoAxis::start_position(const plc::Command& command) noexcept {
   }
   const double target =
       command.type == CommandType::kMoveAbsolute ? command.position : set_.p + command.position;
+  return start_to_target(command.number, target, limits);
+}
+
+ErrorCode ServoAxis::start_to_target(uint16_t number, double target,
+                                     const Limits& limits) noexcept {
   if (!finite(target)) return ErrorCode::kPositionNotFinite;
   // Seed 000 §2.1 notes 4 and 5: the target must lie inside the software limits; where the axis
   // starts from does not matter, so a start from outside back into the range is allowed.
@@ -113,25 +142,28 @@ ErrorCode ServoAxis::start_position(const plc::Command& command) noexcept {
   if (at_rest && (distance == 0.0 || std::abs(distance) < config_.encoder_increment)) {
     // Seed 000 §2.1: no start for a path shorter than one encoder increment — a warning.
     warning_ = plc::to_id(ErrorCode::kMovementSmallerThanIncrement);
-    ref_.Mailbox.set_answer(command.number, CommandState::kDone);
+    ref_.Mailbox.set_answer(number, CommandState::kDone);
     return ErrorCode::kNone;
   }
-  scratch_ = plan_position(set_, target, limits);
-  if (!scratch_.ok()) return scratch_.error();
-  accept(JobKind::kPosition, command.number, scratch_, target,
-         distance >= 0.0 ? limits.velocity : -limits.velocity, limits);
-  return ErrorCode::kNone;
+  return start_positioning(number, target, limits);  // override.cpp: the override applies
 }
 
 ErrorCode ServoAxis::start_velocity(const plc::Command& command) noexcept {
   if (error_ != ErrorCode::kNone) return ErrorCode::kAxisInErrorState;
   if (locked_) return ErrorCode::kMotionCommandsLocked;
+  if (const ErrorCode code = check_start_with_superpositions(); code != ErrorCode::kNone) {
+    return code;
+  }
   if (command.buffer_mode != 0) return ErrorCode::kBufferModeNotSupported;
   Limits limits;
   if (const ErrorCode code = check_dynamics(command, limits); code != ErrorCode::kNone) {
     return code;
   }
-  const double direction = velocity_direction(command.direction);
+  double direction = velocity_direction(command.direction);
+  if (command.direction == 4) {
+    // MC_Current_Direction: the direction the axis moves in; at standstill there is none.
+    direction = set_.v > 0.0 ? 1.0 : (set_.v < 0.0 ? -1.0 : 0.0);
+  }
   if (direction == 0.0) return ErrorCode::kDirectionInvalid;
   // Continuous motion has no target: refuse it only when it would run further out from (or
   // straight through) an enabled software limit it already stands on or beyond.
@@ -144,11 +176,7 @@ ErrorCode ServoAxis::start_velocity(const plc::Command& command) noexcept {
   if (!controller_enabled() || !feed_enabled(direction)) {
     return ErrorCode::kNoControllerOrFeedEnable;
   }
-  const double velocity = direction * limits.velocity;
-  scratch_ = plan_velocity(set_, velocity, limits);
-  if (!scratch_.ok()) return scratch_.error();
-  accept(JobKind::kVelocity, command.number, scratch_, target_, velocity, limits);
-  return ErrorCode::kNone;
+  return start_continuous(command.number, direction * limits.velocity, limits);
 }
 
 ErrorCode ServoAxis::start_halt_or_stop(const plc::Command& command) noexcept {
@@ -171,12 +199,20 @@ ErrorCode ServoAxis::start_halt_or_stop(const plc::Command& command) noexcept {
                 motion ? job_.limits().acceleration : config_.acceleration,
                 motion ? job_.limits().deceleration : config_.deceleration,
                 motion ? job_.limits().jerk : config_.jerk};
-  if (command.deceleration > 0.0) limits.deceleration = command.deceleration;
-  if (command.jerk > 0.0) limits.jerk = command.jerk;
-  scratch_ = plan_stop(set_, limits.deceleration, limits.jerk);
+  // Seed 000 §2.2 "Emergency stop": the command's deceleration and jerk replace the running
+  // motion's only when both are larger, and never in the brake phase (the braking that runs goes
+  // on: a stop with the running motion's values continues it).
+  const bool braking = job_.in_brake_phase(cycle_time_);
+  if (!braking && command.deceleration > limits.deceleration && command.jerk > limits.jerk) {
+    limits.deceleration = command.deceleration;
+    limits.jerk = command.jerk;
+  }
+  // Without the running compensation: it gets its compensation stop on top (seed 000 §2.5).
+  scratch_ = plan_stop(stop_start_state(), limits.deceleration, limits.jerk);
   if (!scratch_.ok()) return scratch_.error();
   accept(stop ? JobKind::kStop : JobKind::kHalt, command.number, scratch_, scratch_.final_state().p,
          0.0, limits);
+  if (braking) job_.mark_brake_phase();
   if (stop) locked_ = true;
   has_been_stopped_ = true;
   return ErrorCode::kNone;
@@ -189,7 +225,7 @@ void ServoAxis::accept(JobKind kind, uint16_t number, const Profile& profile, do
     answer_current(CommandState::kAborted);
   }
   job_.start(kind, number, profile, target, target_velocity, limits);
-  job_.set_override(ref_.PlcToNc.Override);
+  superpositions_on_new_job(kind);
   cmd_no_ = number;
   answer_current(CommandState::kActive);
   if (kind != JobKind::kVelocity) target_ = target;

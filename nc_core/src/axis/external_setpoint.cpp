@@ -5,8 +5,10 @@
 
 namespace nc::detail {
 
-void ExternalSetpoint::enable(Type type, const KinematicState& start, double target) noexcept {
+void ExternalSetpoint::enable(Type type, const KinematicState& start, double target,
+                              double delay) noexcept {
   target_ = target;
+  delay_ = delay;
   if (taking() && type == type_) {
     enabled_ = true;
     final_cycle_ = false;
@@ -33,7 +35,8 @@ void ExternalSetpoint::abort() noexcept {
   state_.a = 0.0;
 }
 
-ExternalSetpoint::Step ExternalSetpoint::take(const plc::PLCTONC_AXIS_REF& in) noexcept {
+ExternalSetpoint::Step ExternalSetpoint::take(const plc::PLCTONC_AXIS_REF& in,
+                                              double cycle_time) noexcept {
   Step step;
   if (!taking()) {
     step.state = state_;
@@ -47,7 +50,9 @@ ExternalSetpoint::Step ExternalSetpoint::take(const plc::PLCTONC_AXIS_REF& in) n
   if (full) {
     if (std::isfinite(in.ExtSetPos) && std::isfinite(in.ExtSetVelo) &&
         std::isfinite(in.ExtSetAcc)) {
-      state_ = KinematicState{in.ExtSetPos, in.ExtSetVelo, in.ExtSetAcc};
+      const double d = delay_;
+      state_ = KinematicState{in.ExtSetPos + in.ExtSetVelo * d + 0.5 * in.ExtSetAcc * d * d,
+                              in.ExtSetVelo + in.ExtSetAcc * d, in.ExtSetAcc};
     } else {
       step.not_finite = true;
     }
@@ -56,7 +61,11 @@ ExternalSetpoint::Step ExternalSetpoint::take(const plc::PLCTONC_AXIS_REF& in) n
   } else {
     step.not_finite = position_only;  // position_only with a non-finite ExtSetPos
   }
-  if (step.not_finite || !full) {
+  if (step.not_finite) {
+    const double t = cycle_time;
+    state_ = KinematicState{state_.p + state_.v * t + 0.5 * state_.a * t * t,
+                            state_.v + state_.a * t, state_.a};
+  } else if (!full) {
     // Not taken (or the position only): the set position holds, nothing moves.
     state_.v = 0.0;
     state_.a = 0.0;

@@ -31,15 +31,19 @@ class ExternalSetpoint {
 
   // Switches on with `start` as the state held until the first packet is taken (absolute: the
   // set state at the enable; relative: a zero offset). Enabling again with the same type keeps
-  // the state; only the target changes.
-  void enable(Type type, const KinematicState& start, double target) noexcept;
+  // the state; only the target changes. `delay` (AxisConfig::ext_setpoint_delay, seed 000 §2.6
+  // "Optimization options"): a taken packet (p, v, a) counts as p + v d + a d²/2, v + a d, a —
+  // set values carried ahead over the transport dead time.
+  void enable(Type type, const KinematicState& start, double target, double delay) noexcept;
   // Off after one more cycle, which still takes ExtSetPos (seed 000 §2.6 "Disabling").
   void disable() noexcept;
   // Off at once (axis error, reset, controller enable gone, stop): the state is held.
   void abort() noexcept;
 
-  // One NC cycle: reads the packet in `in`.
-  Step take(const plc::PLCTONC_AXIS_REF& in) noexcept;
+  // One NC cycle of `cycle_time`: reads the packet in `in`. A packet with NaN or inf is not
+  // taken; the state then goes on for this cycle as its velocity and acceleration say, so that
+  // the error ramp the axis starts from there has no jump.
+  Step take(const plc::PLCTONC_AXIS_REF& in, double cycle_time) noexcept;
 
   bool enabled() const noexcept { return enabled_; }
   // Enabled, or in its one more cycle after the disable.
@@ -52,6 +56,7 @@ class ExternalSetpoint {
   KinematicState state_{};
   Type type_ = Type::kNone;
   double target_ = 0.0;
+  double delay_ = 0.0;
   bool enabled_ = false;
   bool final_cycle_ = false;
   bool was_moving_ = false;  // the previous cycle's direction was ±1

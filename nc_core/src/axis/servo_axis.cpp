@@ -33,9 +33,10 @@ bool ServoAxis::feed_enabled(double direction) const noexcept {
 }
 
 void ServoAxis::cycle(uint64_t cycle_counter) noexcept {
-  job_.set_override(ref_.PlcToNc.Override);
+  read_override();
   handle_commands();
   check_enables();
+  run_online_functions();
   generate_set_values();
   control_and_drive();
   run_monitors();
@@ -53,8 +54,9 @@ void ServoAxis::check_enables() noexcept {
     job_.clear();
     return;
   }
-  // Feed enable removed in the direction of travel: the axis stops on its error ramp.
-  if (job_.is_motion() && error_ == ErrorCode::kNone) {
+  // Feed enable removed in the direction of travel: the axis stops on its error ramp (also when
+  // external setpoints move it).
+  if ((job_.is_motion() || external_.enabled()) && error_ == ErrorCode::kNone) {
     if (set_.v > 0.0 && !feed_enabled(1.0)) {
       raise_error(ErrorCode::kFeedEnablePlusMissing);
     } else if (set_.v < 0.0 && !feed_enabled(-1.0)) {
@@ -66,17 +68,23 @@ void ServoAxis::check_enables() noexcept {
 void ServoAxis::generate_set_values() noexcept {
   previous_set_position_ = set_.p;
   if (!controller_enabled()) {
-    set_jerk_ = 0.0;  // no generation: control_and_drive() makes the set position follow
+    set_jerk_ = 0.0;            // no generation: control_and_drive() makes the set position follow
+    end_external_generation();  // seed 000 §2.6: the controller enable's edge switches it off
     return;
   }
   if (job_.active()) {
-    set_ = job_.advance(cycle_time_);
+    base_ = job_.advance(cycle_time_);
     set_jerk_ = job_.jerk();
+  } else if (compensation_.running() || external_.taking()) {
+    base_.v = 0.0;  // the basic motion holds; a superposition may still move the axis
+    base_.a = 0.0;
+    set_jerk_ = 0.0;
   } else {
-    set_.v = 0.0;
-    set_.a = 0.0;
+    base_ = KinematicState{set_.p, 0.0, 0.0};  // the axis holds where it is
+    held_ = 0.0;
     set_jerk_ = 0.0;
   }
+  superimpose();  // superposition.cpp: set_ = base_ + compensation + external setpoints
 }
 
 void ServoAxis::control_and_drive() noexcept {
@@ -156,6 +164,8 @@ void ServoAxis::raise_error(ErrorCode code) noexcept {
       (cmd_state_ == CommandState::kActive || cmd_state_ == CommandState::kReached)) {
     answer_current(CommandState::kError, plc::to_id(code));
   }
+  // The compensation fails with the axis; external generation is switched off (seed 000 §2.6).
+  fold_superpositions(CommandState::kError, code);
   if (!controller_enabled()) {
     job_.clear();
     return;

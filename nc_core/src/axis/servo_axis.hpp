@@ -10,7 +10,9 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "axis/compensation.hpp"
 #include "axis/drive.hpp"
+#include "axis/external_setpoint.hpp"
 #include "axis/master_job.hpp"
 #include "axis/monitors.hpp"
 #include "axis/position_controller.hpp"
@@ -31,6 +33,10 @@ class ServoAxis {
   // One NC cycle of this axis (steps a … f of ARCHITECTURE "One tick").
   void cycle(uint64_t cycle_counter) noexcept;
 
+  // A position compensation (MC_MoveSuperImposed) is running: new-position functions are refused
+  // meanwhile (seed 000 §2.5 note 9).
+  bool compensation_active() const noexcept { return compensation_.running(); }
+
  private:
   // --- commands.cpp ---
   void handle_commands() noexcept;
@@ -38,6 +44,9 @@ class ServoAxis {
   ErrorCode start_position(const plc::Command& command) noexcept;
   ErrorCode start_velocity(const plc::Command& command) noexcept;
   ErrorCode start_halt_or_stop(const plc::Command& command) noexcept;
+  // The checks of a positioning start once its absolute target is known (software limits,
+  // enables, shorter than one increment), then start_positioning().
+  ErrorCode start_to_target(uint16_t number, double target, const Limits& limits) noexcept;
   ErrorCode check_dynamics(const plc::Command& command, Limits& limits) const noexcept;
   // The new job replaces the running one: the replaced command is answered kAborted.
   void accept(JobKind kind, uint16_t number, const Profile& profile, double target,
@@ -60,6 +69,74 @@ class ServoAxis {
   // --- publish.cpp ---
   void publish(uint64_t cycle_counter) noexcept;
 
+  // --- override.cpp (B3 override, seed 000 §2.2) ---
+  // Step a': PlcToNc.Override into the job; above 1'000'000 it is not taken (warning 0x4238).
+  void read_override() noexcept;
+  // The velocity level the override gives for a job: V (types 2, 4) or the level reduced at the
+  // start (types 1, 3), times the override.
+  double override_level() const noexcept;
+  // A positioning / velocity job planned from set_ with the override in force, then accept().
+  ErrorCode start_positioning(uint16_t number, double target, const Limits& limits) noexcept;
+  ErrorCode start_continuous(uint16_t number, double velocity, const Limits& limits) noexcept;
+  // The override changed: the running table is replanned (or kept, seed 000 §2.2).
+  void apply_override() noexcept;
+  // Into scratch_: to `target` at path velocity `level`, or for level 0 a rest on the path
+  // (`final` false). False when the planner refuses.
+  bool plan_table(const KinematicState& from, double target, const Limits& limits, double level,
+                  bool& final) noexcept;
+
+  // --- online_change.cpp (B4-B6 stop rules, new end position, new velocity; seed 000 §2.2-2.4)
+  // Step b': the override and a due new velocity act on the running job.
+  void run_online_functions() noexcept;
+  // A Halt or Stop runs or MC_Stop's lock is held: new-position functions are refused.
+  bool stop_active() const noexcept;
+  ErrorCode new_position(const plc::Command& command) noexcept;
+  ErrorCode new_position_and_velocity(const plc::Command& command) noexcept;
+  // The refusals common to both (axis error, stop, target, job, compensation, feed enable).
+  ErrorCode check_new_target(double target) const noexcept;
+  // Replans the running positioning to `target` with user velocity `velocity` (override
+  // applied), from the basic motion's state.
+  bool retarget(double target, double velocity) noexcept;
+  // Seed 000 §2.4 "New velocity": VNew for the running positioning, reduced iteratively when
+  // not reachable; false (table kept) when nothing fits.
+  bool activate_velocity(double velocity) noexcept;
+  // Installs scratch_ into the running job (planned from basic_state()), keeping the
+  // superpositions on top.
+  void install_table(double target, bool final, double level) noexcept;
+
+  // --- modulo.cpp (B1 modulo start, seed 000 §2.1) ---
+  ErrorCode start_modulo(const plc::Command& command) noexcept;
+
+  // --- superposition.cpp (B7 position compensation, B8 external setpoints) ---
+  // set_ = base_ + held_ + the running compensation + the external offset (relative), or the
+  // external set values (absolute). Every new plan of the basic motion either starts from set_
+  // and then calls fold_superpositions() (accept() and raise_error() do: the superpositions end),
+  // or starts from basic_state() and then calls rebase_superpositions() (they go on).
+  ErrorCode start_compensation(const plc::Command& command) noexcept;
+  ErrorCode stop_compensation(const plc::Command& command) noexcept;
+  ErrorCode enable_external(const plc::Command& command) noexcept;
+  ErrorCode disable_external(const plc::Command& command) noexcept;
+  // A PTP start is refused while external setpoint generation is enabled (seed 000 §2.6).
+  ErrorCode check_start_with_superpositions() const noexcept;
+  // Step b, after the basic set values (base_) of this cycle: adds the superpositions into set_.
+  void superimpose() noexcept;
+  // The set state without the running compensation and the external offset: where a replan of
+  // the basic motion starts when the superpositions are to go on.
+  KinematicState basic_state() const noexcept;
+  // Halt / Stop start here: set_ without the running compensation (which gets its compensation
+  // stop and goes on to the stop's end of path, seed 000 §2.5).
+  KinematicState stop_start_state() const noexcept;
+  // After job_.start() of a job planned from set_: the compensation ends (answered `state`, with
+  // `code` for kError), the external generation is switched off, the held offsets are dropped.
+  void fold_superpositions(plc::CommandState state, ErrorCode code = ErrorCode::kNone) noexcept;
+  // After job_.start() of a job planned from basic_state(): the held offset is in the new job.
+  void rebase_superpositions() noexcept;
+  // accept(): which of the two above a new job of `kind` needs (Halt / Stop: compensation stop).
+  void superpositions_on_new_job(JobKind kind) noexcept;
+  // Reset, or the controller enable gone: the external generation is switched off at once.
+  void end_external_generation() noexcept;
+  void end_compensation(plc::CommandState state, uint32_t code = 0) noexcept;
+
   AxisConfig config_;
   double cycle_time_;
   std::size_t index_;
@@ -71,7 +148,11 @@ class ServoAxis {
   Drive drive_{};
   Monitors monitors_{};
 
-  KinematicState set_{};  // set values of this cycle
+  KinematicState set_{};   // set values of this cycle (basic motion + superpositions)
+  KinematicState base_{};  // the basic motion's own set values (the master job's, or held)
+  double held_ = 0.0;      // offsets of ended superpositions, kept until the basic job changes
+  Compensation compensation_{};
+  ExternalSetpoint external_{};
   double set_jerk_ = 0.0;
   double previous_set_position_ = 0.0;
   double previous_measured_ = 0.0;

@@ -1,0 +1,198 @@
+// Online changes of a running positioning (SPEC B5, B6; seed 000 §2.3, §2.4) and the per-cycle
+// step in which the override and a due new velocity act on the running job.
+//
+// New end position (MC_NewPos, kNewPos): the running positioning is replanned to the new target
+// from the basic motion's set state with the user's V (the override applied). The planner gives
+// the quickest way: where the axis has passed the new target or cannot stop before it, one
+// continuous table stops and returns; where V was not reachable before and is now, it is reached.
+// The command is answered kDone when accepted (Tc2 MC_NewPos: Done = new position accepted); the
+// running command keeps CmdNo and ends kDone at the new target.
+//
+// New velocity and new end position (MC_NewPosAndVelo, kNewPosAndVelo: EPos, VNew, APos): the
+// same replan to EPos with the old V (VOld), and VNew for later or now by the six cases of seed
+// 000 §2.4, judged along the logical direction d (the direction of travel; at rest the direction
+// to the running target):
+//   1  Pos < APos <= EPos   VNew once the set position passes APos moving in d
+//   2  APos <= Pos <= EPos  VNew at once
+//   3  APos <= EPos < Pos   return to EPos with VOld
+//   4  Pos <= EPos < APos   EPos with VOld only
+//   5  EPos < APos <= Pos   return with VOld, VNew once APos is passed on the way back (beyond
+//                           the vendor, who does not implement it)
+//   6  EPos < Pos < APos    return with VOld
+// New velocity: the table to the end position is replanned with VNew. VNew is "reachable" when
+// that table holds or touches the level VNew (reaches_level); otherwise the level is reduced
+// iteratively, halving its difference to the current speed, 8 attempts in all; when none is
+// reachable the table that runs is kept.
+// Brake phase: a due new velocity waits (is suspended) while the running table is in its brake
+// phase and acts once it is not — e.g. when the new end position gives the table a new
+// acceleration; a table that brakes to its end drops it with the job.
+// Events: a request replaces a pending activation (cases 1, 5: by its own; cases 2, 3, 4, 6 and
+// MC_NewPos: deletes it — seed 000 §2.4 "Event 1 … 4").
+#include <cmath>
+
+#include "axis/servo_axis.hpp"
+
+namespace nc::detail {
+
+namespace {
+
+// Seed 000 §2.4: "the set velocity is reduced iteratively 7-8 times".
+constexpr int kVelocityAttempts = 8;
+
+bool finite(double x) noexcept {
+  return std::isfinite(x);
+}
+
+}  // namespace
+
+void ServoAxis::run_online_functions() noexcept {
+  // Only a running motion job: no override while a stop (Halt, Stop, error ramp) is active.
+  if (!controller_enabled() || error_ != ErrorCode::kNone || !job_.is_motion()) return;
+  bool replanned = false;
+  Activation& activation = job_.activation();
+  if (job_.kind() == JobKind::kPosition && activation.armed) {
+    const bool due =
+        activation.immediate || (activation.direction * (set_.p - activation.position) >= 0.0 &&
+                                 activation.direction * set_.v > 0.0);
+    if (due && !job_.in_brake_phase(cycle_time_)) {
+      activation.armed = false;
+      replanned = activate_velocity(activation.velocity);
+    }
+  }
+  if (!replanned && job_.override_value() != job_.handled_override()) apply_override();
+}
+
+bool ServoAxis::stop_active() const noexcept {
+  return locked_ || job_.kind() == JobKind::kHalt || job_.kind() == JobKind::kStop;
+}
+
+ErrorCode ServoAxis::check_new_target(double target) const noexcept {
+  if (monitors_.below_min(target) || monitors_.above_max(target)) {
+    return ErrorCode::kTargetPositionNotAllowed;
+  }
+  if (job_.kind() != JobKind::kPosition) return ErrorCode::kFunctionNotAllowed;
+  if (compensation_active()) return ErrorCode::kCompensationActive;  // seed 000 §2.3, §2.4
+  if (!controller_enabled() || !feed_enabled(target - basic_state().p)) {
+    return ErrorCode::kNoControllerOrFeedEnable;
+  }
+  return ErrorCode::kNone;
+}
+
+ErrorCode ServoAxis::new_position(const plc::Command& command) noexcept {
+  if (error_ != ErrorCode::kNone) return ErrorCode::kAxisInErrorState;
+  if (stop_active()) return ErrorCode::kStopAlreadyActive;
+  if (!finite(command.position)) return ErrorCode::kPositionNotFinite;
+  if (const ErrorCode code = check_new_target(command.position); code != ErrorCode::kNone) {
+    return code;
+  }
+  if (!retarget(command.position, job_.user_velocity())) return ErrorCode::kPlannerNoSolution;
+  job_.activation() = Activation{};  // an instantaneous-only request deletes a pending one
+  ref_.Mailbox.set_answer(command.number, plc::CommandState::kDone);
+  return ErrorCode::kNone;
+}
+
+ErrorCode ServoAxis::new_position_and_velocity(const plc::Command& command) noexcept {
+  if (error_ != ErrorCode::kNone) return ErrorCode::kAxisInErrorState;
+  if (stop_active()) return ErrorCode::kStopAlreadyActive;
+  if (!finite(command.position)) return ErrorCode::kPositionNotFinite;
+  if (!finite(command.velocity) || !finite(command.activation_position)) {
+    return ErrorCode::kParameterNotFinite;
+  }
+  if (command.velocity <= 0.0) return ErrorCode::kVelocityNotPositive;
+  if (command.velocity > config_.max_velocity || command.velocity > config_.ref_velocity) {
+    return ErrorCode::kVelocityNotAllowed;
+  }
+  if (const ErrorCode code = check_new_target(command.position); code != ErrorCode::kNone) {
+    return code;
+  }
+
+  // The six cases of seed 000 §2.4 in the logical direction d (positions multiplied by d).
+  const KinematicState now = basic_state();
+  double d = now.v > 0.0 ? 1.0 : (now.v < 0.0 ? -1.0 : 0.0);
+  if (d == 0.0) d = job_.target() >= job_.state().p ? 1.0 : -1.0;
+  const double pos = d * now.p;
+  const double apos = d * command.activation_position;
+  const double epos = d * command.position;
+  Activation next{};
+  next.velocity = command.velocity;
+  next.position = command.activation_position;
+  if (epos >= pos) {
+    if (apos <= pos) {
+      next.armed = true;  // case 2: at once (or as soon as the brake phase allows)
+      next.immediate = true;
+    } else if (apos <= epos) {
+      next.armed = true;  // case 1: once APos is passed
+      next.direction = d;
+    }  // case 4: APos lies beyond the end, VNew never acts
+  } else if (apos > epos && apos <= pos) {
+    next.armed = true;  // case 5: once APos is passed on the way back
+    next.direction = -d;
+  }  // cases 3 and 6: back to EPos with VOld
+
+  if (!retarget(command.position, job_.user_velocity())) return ErrorCode::kPlannerNoSolution;
+  job_.activation() = next;  // replaces (or, when not armed, deletes) a pending activation
+  ref_.Mailbox.set_answer(command.number, plc::CommandState::kDone);
+  return ErrorCode::kNone;
+}
+
+bool ServoAxis::retarget(double target, double velocity) noexcept {
+  const KinematicState from = basic_state();
+  Limits limits = job_.limits();
+  limits.velocity = velocity;
+  scratch_ = plan_position(from, target, limits);
+  if (!scratch_.ok()) return false;
+  const double reduced = reduced_level(scratch_, velocity);
+  const double direction = target >= from.p ? 1.0 : -1.0;
+  const uint32_t override_value = job_.override_value();
+  const bool user = config_.override_type == 2 || config_.override_type == 4;
+  const double level = (user ? velocity : reduced) * override_factor(override_value);
+  bool final = true;
+  if (override_value != plc::kOverrideFull && !plan_table(from, target, limits, level, final)) {
+    return false;
+  }
+  job_.set_levels(velocity, reduced, direction);
+  job_.set_handled_override(override_value);
+  install_table(target, final, level);
+  monitors_.reset_windows();
+  return true;
+}
+
+bool ServoAxis::activate_velocity(double velocity) noexcept {
+  const uint32_t override_value = job_.override_value();
+  const double f = override_factor(override_value);
+  if (f == 0.0) {
+    // At override 0 the job rests: VNew becomes its V and acts when the override rises.
+    job_.set_levels(velocity, velocity, job_.direction());
+    return false;
+  }
+  const KinematicState from = basic_state();
+  const double target = job_.target() + (from.p - job_.state().p);
+  const double direction = target >= from.p ? 1.0 : -1.0;
+  const double speed = std::abs(from.v);
+  Limits limits = job_.limits();
+  double level = velocity * f;
+  for (int attempt = 0; attempt < kVelocityAttempts; ++attempt) {
+    limits.velocity = level;
+    scratch_ = plan_position(from, target, limits);
+    if (scratch_.ok() && reaches_level(scratch_, level)) {
+      job_.set_levels(velocity, level / f, direction);
+      job_.set_handled_override(override_value);
+      install_table(target, true, level);
+      return true;
+    }
+    level = speed + 0.5 * (level - speed);  // halve the difference to the current speed
+  }
+  return false;
+}
+
+void ServoAxis::install_table(double target, bool final, double level) noexcept {
+  job_.replan(scratch_, final);
+  rebase_superpositions();  // planned from basic_state(): the held offset is in the table now
+  if (job_.kind() == JobKind::kPosition) {
+    job_.set_target(target);
+    target_ = target;
+  }
+  job_.set_target_velocity(final ? job_.direction() * level : 0.0);
+}
+
+}  // namespace nc::detail

@@ -1,0 +1,135 @@
+// The override (SPEC B3, seed 000 §2.2): PlcToNc.Override, 0 … 1'000'000 = 0 … 100 %, read at
+// the start of every NC cycle. Instantaneous, not time-scaled: on a change the running table is
+// replanned from the basic motion's set state with the new velocity level, which the planner
+// reaches as fast as A+, A- and J allow (a lower level from above without undershoot).
+//
+// The level is base · override, the base being chosen by AxisConfig::override_type:
+//   1, 3: the level "calculated and possibly reduced at the start" = the highest path velocity of
+//         the table planned at 100 % when the job started (V when V is reached);
+//   2, 4: the user's V.
+// Types 1 and 2 keep the old table when the new table would not reach the new level; types 3
+// and 4 take the new table, which reaches the best level below it that the distance allows
+// (the planner is time-optimal, so that is the "smaller optimal velocity level").
+// Override 0 brings a positioning to rest on its path (a rest table, the job stays active) and a
+// velocity job to v = 0; a rising override moves on from there — from a rest the new table is
+// always taken (keeping the rest would leave the job waiting for ever).
+#include <cmath>
+
+#include "axis/servo_axis.hpp"
+
+namespace nc::detail {
+
+namespace {
+
+bool user_velocity_type(int override_type) noexcept {
+  return override_type == 2 || override_type == 4;
+}
+
+// Types 1 and 2 keep the old table when the new level is not achievable.
+bool keeps_table_type(int override_type) noexcept {
+  return override_type == 1 || override_type == 2;
+}
+
+}  // namespace
+
+void ServoAxis::read_override() noexcept {
+  const uint32_t value = ref_.PlcToNc.Override;
+  const uint32_t not_allowed = plc::to_id(ErrorCode::kOverrideNotAllowed);
+  if (value > plc::kOverrideFull) {
+    // Not a percentage: not taken. The last valid value stays in force, the warning says why.
+    warning_ = not_allowed;
+    return;
+  }
+  if (warning_ == not_allowed) warning_ = 0;
+  job_.set_override(value);
+}
+
+double ServoAxis::override_level() const noexcept {
+  const double base =
+      user_velocity_type(config_.override_type) ? job_.user_velocity() : job_.reduced_velocity();
+  return base * override_factor(job_.override_value());
+}
+
+bool ServoAxis::plan_table(const KinematicState& from, double target, const Limits& limits,
+                           double level, bool& final) noexcept {
+  if (level > 0.0) {
+    Limits at_level = limits;
+    at_level.velocity = level;
+    scratch_ = plan_position(from, target, at_level);
+    final = true;
+  } else {
+    scratch_ = plan_stop(from, limits.deceleration, limits.jerk);
+    final = false;
+  }
+  return scratch_.ok();
+}
+
+ErrorCode ServoAxis::start_positioning(uint16_t number, double target,
+                                       const Limits& limits) noexcept {
+  // Planned at 100 % first: its peak is the level reduced at the start (types 1 and 3).
+  scratch_ = plan_position(set_, target, limits);
+  if (!scratch_.ok()) return scratch_.error();
+  const double reduced = reduced_level(scratch_, limits.velocity);
+  const double direction = target >= set_.p ? 1.0 : -1.0;
+  const uint32_t override_value = job_.override_value();
+  const double level = (user_velocity_type(config_.override_type) ? limits.velocity : reduced) *
+                       override_factor(override_value);
+  bool final = true;
+  if (override_value != plc::kOverrideFull && !plan_table(set_, target, limits, level, final)) {
+    return scratch_.error();
+  }
+  accept(JobKind::kPosition, number, scratch_, target, final ? direction * level : 0.0, limits);
+  job_.set_levels(limits.velocity, reduced, direction);
+  if (!final) job_.replan(scratch_, false);  // a start at override 0 waits at rest
+  if (ref_.PlcToNc.Override > plc::kOverrideFull) {
+    warning_ = plc::to_id(ErrorCode::kOverrideNotAllowed);  // accept() cleared it
+  }
+  return ErrorCode::kNone;
+}
+
+ErrorCode ServoAxis::start_continuous(uint16_t number, double velocity,
+                                      const Limits& limits) noexcept {
+  const double direction = velocity < 0.0 ? -1.0 : 1.0;
+  const double speed = std::abs(velocity);
+  const double level = speed * override_factor(job_.override_value());
+  scratch_ = plan_velocity(set_, direction * level, limits);
+  if (!scratch_.ok()) return scratch_.error();
+  accept(JobKind::kVelocity, number, scratch_, target_, direction * level, limits);
+  job_.set_levels(speed, speed, direction);
+  if (ref_.PlcToNc.Override > plc::kOverrideFull) {
+    warning_ = plc::to_id(ErrorCode::kOverrideNotAllowed);
+  }
+  return ErrorCode::kNone;
+}
+
+void ServoAxis::apply_override() noexcept {
+  // Answered once: a change that is refused (brake phase, types 1 and 2) is not retried
+  // (seed 000 §2.1 "In case of failure, the function is not called again automatically").
+  job_.set_handled_override(job_.override_value());
+  const KinematicState from = basic_state();
+  const double level = override_level();
+  if (job_.kind() == JobKind::kVelocity) {
+    scratch_ = plan_velocity(from, job_.direction() * level, job_.limits());
+    if (scratch_.ok()) install_table(job_.target(), true, level);
+    return;
+  }
+  const bool resting = !job_.final_table();
+  if (!resting && job_.in_brake_phase(cycle_time_)) return;  // seed 000 §2.2
+  // The job's end, moved by what ended superpositions left (basic_state() includes it).
+  const double target = job_.target() + (from.p - job_.state().p);
+  bool final = true;
+  if (!plan_table(from, target, job_.limits(), level, final)) return;
+  if (!final) {
+    if (resting) return;
+    // Override 0: rest on the path. A rest that would pass the target means the braking to the
+    // target has in effect begun: the table goes on.
+    const double toward = target - from.p;
+    if (from.v * toward > 0.0 && (scratch_.final_state().p - target) * toward > 0.0) return;
+  } else if (!resting && keeps_table_type(config_.override_type) &&
+             !reaches_level(scratch_, level)) {
+    return;  // types 1 and 2: the new level is not achievable, the old table is kept
+  }
+  install_table(target, final, level);
+}
+
+}  // namespace nc::detail
