@@ -1,0 +1,280 @@
+// Every bad input of the superposition blocks (MC_MoveSuperImposed, MC_AbortSuperposition,
+// MC_ExtSetPointGenEnable, MC_ExtSetPointGenFeed), sent to the real kernel while another block's
+// move runs and again at standstill after it, gives its specific ErrorID and changes nothing: the
+// NC→PLC image is bit-identical, cycle by cycle, to the same program run without the bad block,
+// and the running move ends exactly as there (seed 000 §2.5 "start parameters": L, VP, VK, AK+,
+// AK- > 0 and D ≠ 0; §2.6 start types absolute (1) and relative (2); feed directions -1, 0, +1).
+#include <catch2/catch.hpp>
+
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "fb/fb.hpp"
+#include "nc_core/axis_config.hpp"
+#include "nc_core/cycle_driver.hpp"
+#include "nc_core/kernel.hpp"
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+constexpr double kCycle = 0.001;         // s
+constexpr uint64_t kRunTicks = 3'200;    // the move ends at about 2.1 s
+constexpr double kMoveTarget = 2'000.0;  // mm
+constexpr double kMoveSpeed = 1'000.0;   // mm/s
+
+// The superposition blocks, each with valid inputs; a case spoils one of them.
+struct Blocks {
+  Blocks() {
+    comp.Distance = 50.0;
+    comp.Length = 1'000.0;
+    comp.VelocityProcess = kMoveSpeed;
+    comp.VelocityDiff = 100.0;
+    comp.Acceleration = 500.0;
+    comp.Deceleration = 500.0;
+    enable.Position = kMoveTarget;
+    enable.PositionType = fb::POSITIONTYPE_RELATIVE;  // allowed beside a running move
+  }
+  fb::MC_MoveSuperImposed comp;
+  fb::MC_AbortSuperposition abort;
+  fb::MC_ExtSetPointGenEnable enable;
+  double feed_position = 0.0;
+  int32_t feed_direction = 1;
+};
+
+enum class Which { kMoveSuperImposed, kAbortSuperposition, kExtSetPointGenEnable, kFeed };
+
+struct Case {
+  std::string what;
+  Which which;
+  std::function<void(Blocks&)> spoil;
+  uint32_t code;
+};
+
+struct Shown {
+  bool busy = false, error = false;
+  uint32_t error_id = 0;
+};
+
+Shown call_bad(Which which, Blocks& b, plc::AXIS_REF& axis) {
+  auto run = [&](auto& block) {
+    block.Execute = true;
+    block(axis);
+    return Shown{block.Busy, block.Error, block.ErrorID};
+  };
+  switch (which) {
+    case Which::kMoveSuperImposed:
+      return run(b.comp);
+    case Which::kAbortSuperposition:
+      return run(b.abort);
+    case Which::kExtSetPointGenEnable:
+      return run(b.enable);
+    case Which::kFeed: {
+      const uint32_t id =
+          fb::MC_ExtSetPointGenFeed(b.feed_position, 0.0, 0.0, b.feed_direction, axis);
+      return Shown{false, id != 0, id};
+    }
+  }
+  return {};
+}
+
+// The NC→PLC image of one cycle (bar the cycle counter) and the PLC→NC words it reads.
+struct Sample {
+  uint32_t state_dword, error_code, axis_state, warning;
+  double act_pos, act_velo, pos_diff, set_pos, set_velo, set_acc, set_jerk, target_pos;
+  double compensation_distance, compensation_length, compensation_velocity_diff;
+  uint16_t cmd_no, cmd_state;
+  double ext_pos, ext_velo, ext_acc;
+  int32_t ext_direction;
+  bool operator==(const Sample&) const = default;
+};
+
+Sample sample(const plc::AXIS_REF& axis) {
+  const plc::NCTOPLC_AXIS_REF& n = axis.NcToPlc;
+  const plc::PLCTONC_AXIS_REF& p = axis.PlcToNc;
+  return Sample{n.StateDWord,
+                n.ErrorCode,
+                n.AxisState,
+                n.Warning,
+                n.ActPos,
+                n.ActVelo,
+                n.PosDiff,
+                n.SetPos,
+                n.SetVelo,
+                n.SetAcc,
+                n.SetJerk,
+                n.TargetPos,
+                n.CompensationDistance,
+                n.CompensationLength,
+                n.CompensationVelocityDiff,
+                n.CmdNo,
+                n.CmdState,
+                p.ExtSetPos,
+                p.ExtSetVelo,
+                p.ExtSetAcc,
+                p.ExtSetDirection};
+}
+
+struct Run {
+  std::vector<Sample> trace;
+  int64_t move_done_tick = -1;
+  bool move_aborted_or_failed = false;
+  std::vector<Shown> bad;  // the bad block's outputs from the injection on
+};
+
+// Enable the axis, move to 2000 mm; at `inject` the bad block gets its rising edge (or the feed
+// its first call) and is then called every cycle with Execute held high.
+Run run(const Case* bad, uint64_t inject) {
+  nc::Kernel kernel(nc::KernelConfig{kCycle});
+  nc::AxisConfig config;
+  config.name = "X";
+  plc::AXIS_REF& axis = kernel.add_axis(config);
+  nc::CycleDriver driver(kernel);
+
+  fb::MC_Power power;
+  fb::MC_MoveAbsolute move;
+  Blocks blocks;
+  Run result;
+  result.trace.reserve(kRunTicks);
+
+  driver.add_task("plc", kCycle, [&] {
+    const uint64_t tick = driver.ticks();
+    power.Enable = power.Enable_Positive = power.Enable_Negative = true;
+    power(axis);
+    move.Position = kMoveTarget;
+    move.Velocity = kMoveSpeed;
+    move.Execute = tick >= 2;
+    move(axis);
+    if (move.Done && result.move_done_tick < 0) result.move_done_tick = static_cast<int64_t>(tick);
+    if (move.CommandAborted || move.Error) result.move_aborted_or_failed = true;
+    if (bad != nullptr && tick == inject) bad->spoil(blocks);
+    if (bad != nullptr && tick >= inject) result.bad.push_back(call_bad(bad->which, blocks, axis));
+  });
+  for (uint64_t i = 0; i < kRunTicks; ++i) {
+    driver.tick();
+    result.trace.push_back(sample(axis));
+  }
+  return result;
+}
+
+std::vector<Case> cases() {
+  std::vector<Case> c;
+  using W = Which;
+  const auto comp = [&](const std::string& what, std::function<void(fb::MC_MoveSuperImposed&)> f,
+                        uint32_t code) {
+    c.push_back(
+        {"MC_MoveSuperImposed." + what, W::kMoveSuperImposed, [f](Blocks& b) { f(b.comp); }, code});
+  };
+  // D: not finite 0x4F01, 0 0x4244.
+  for (const double d : {kNaN, kInf, -kInf}) {
+    comp(
+        "Distance = " + std::to_string(d), [d](auto& b) { b.Distance = d; }, 0x4F01);
+  }
+  comp(
+      "Distance = 0", [](auto& b) { b.Distance = 0.0; }, 0x4244);
+  // L, VP, VK, AK+, AK-: not finite 0x4F02; <= 0 their own code.
+  const struct {
+    const char* input;
+    double fb::MC_MoveSuperImposed::*member;
+    uint32_t code;
+  } positive[] = {{"Length", &fb::MC_MoveSuperImposed::Length, 0x4270},
+                  {"VelocityProcess", &fb::MC_MoveSuperImposed::VelocityProcess, 0x4271},
+                  {"VelocityDiff", &fb::MC_MoveSuperImposed::VelocityDiff, 0x4271},
+                  {"Acceleration", &fb::MC_MoveSuperImposed::Acceleration, 0x4272},
+                  {"Deceleration", &fb::MC_MoveSuperImposed::Deceleration, 0x4272}};
+  for (const auto& p : positive) {
+    const auto member = p.member;
+    for (const double v : {kNaN, kInf, -kInf}) {
+      comp(
+          std::string(p.input) + " = " + std::to_string(v), [member, v](auto& b) { b.*member = v; },
+          0x4F02);
+    }
+    for (const double v : {0.0, -1.0}) {
+      comp(
+          std::string(p.input) + " = " + std::to_string(v), [member, v](auto& b) { b.*member = v; },
+          p.code);
+    }
+  }
+  // MC_AbortSuperposition with no compensation running.
+  c.push_back({"MC_AbortSuperposition without a compensation", W::kAbortSuperposition,
+               [](Blocks&) {}, 0x4246});
+  // MC_ExtSetPointGenEnable: a PositionType outside E_PositionType (the block's check), a
+  // target that is not finite (the NC's).
+  for (const int type : {0, 3, -1}) {
+    c.push_back(
+        {"MC_ExtSetPointGenEnable.PositionType = " + std::to_string(type), W::kExtSetPointGenEnable,
+         [type](Blocks& b) { b.enable.PositionType = static_cast<fb::E_PositionType>(type); },
+         0x4239});
+  }
+  for (const double p : {kNaN, kInf}) {
+    c.push_back({"MC_ExtSetPointGenEnable.Position = " + std::to_string(p),
+                 W::kExtSetPointGenEnable, [p](Blocks& b) { b.enable.Position = p; }, 0x4F01});
+  }
+  // MC_ExtSetPointGenFeed: a direction outside -1, 0, +1 writes nothing.
+  for (const int32_t d : {2, -2, 1000}) {
+    c.push_back({"MC_ExtSetPointGenFeed Direction = " + std::to_string(d), W::kFeed,
+                 [d](Blocks& b) {
+                   b.feed_direction = d;
+                   b.feed_position = 123.0;
+                 },
+                 0x4F07});
+  }
+  return c;
+}
+
+}  // namespace
+
+TEST_CASE("a valid compensation on the same program is accepted and moves the end by D",
+          "[fb][kernel][superimposed]") {
+  // The control case: the program and the blocks' default inputs do reach the NC, so an
+  // identical image in the bad cases means "refused", not "never sent".
+  const Case valid{"valid", Which::kMoveSuperImposed, [](Blocks&) {}, 0};
+  const Run ref = run(nullptr, 0);
+  const Run ok = run(&valid, 400);
+  REQUIRE(ref.move_done_tick > 0);
+  REQUIRE(ref.trace.back().set_pos == kMoveTarget);
+  REQUIRE(ok.bad.size() > 2);
+  CHECK(ok.bad[1].busy);
+  CHECK_FALSE(ok.bad[1].error);
+  CHECK(ok.trace.back().set_pos == Approx(kMoveTarget + 50.0).margin(1e-9));
+  CHECK(ok.trace.back().compensation_distance == Approx(50.0).margin(1e-9));
+}
+
+TEST_CASE(
+    "every bad input of the superposition blocks gives its own ErrorID and changes nothing "
+    "in the axis's state or motion",
+    "[fb][kernel][superimposed]") {
+  const std::vector<Case> all = cases();
+  REQUIRE(all.size() == 4 + 5 * 5 + 1 + 3 + 2 + 3);
+  const Run ref = run(nullptr, 0);
+  REQUIRE(ref.move_done_tick > 0);
+  REQUIRE(ref.move_done_tick < 3'000);
+  REQUIRE(ref.trace[400].set_velo == kMoveSpeed);  // mid-move injection: cruising
+  // Mid-move (cruising toward 2000 mm) and at standstill after the move ended.
+  for (const uint64_t inject : {400U, 3'000U}) {
+    for (const Case& c : all) {
+      INFO(c.what << ", injected at tick " << inject);
+      const Run bad = run(&c, inject);
+      REQUIRE(bad.bad.size() > 2);
+      for (std::size_t i = 1; i < bad.bad.size(); ++i) {
+        INFO("call " << i << " after the rising edge");
+        REQUIRE(bad.bad[i].error);
+        REQUIRE(bad.bad[i].error_id == c.code);
+        REQUIRE_FALSE(bad.bad[i].busy);
+      }
+      REQUIRE_FALSE(bad.move_aborted_or_failed);
+      REQUIRE(bad.move_done_tick == ref.move_done_tick);
+      REQUIRE(bad.trace.size() == ref.trace.size());
+      for (std::size_t t = 0; t < ref.trace.size(); ++t) {
+        if (!(bad.trace[t] == ref.trace[t])) {
+          FAIL_CHECK("NC image differs at tick " << t);
+          break;
+        }
+      }
+    }
+  }
+}
