@@ -23,9 +23,9 @@ TEST_CASE("absolute: InTargetPosition once the fed motion rests within the windo
     const int cycles =
         h.cycles_until([&] { return kt::bit(*h.x, plc::kStateInTargetPosition); }, 500);
     if (target == 100.0) {
-      // In the 2 mm window from the ramp's packet 196 (98 mm) on; 20 samples (20 ms) make it
-      // InTargetPosition at cycle 215, i.e. 15 cycles after the last ramp packet.
-      CHECK(cycles == 15);
+      // The window counts only once the fed motion rests (direction 0 from cycle 201 on):
+      // 20 samples (20 ms) make it InTargetPosition 20 cycles after the last ramp packet.
+      CHECK(cycles == 20);
     } else {
       CHECK(cycles == -1);
     }
@@ -48,4 +48,21 @@ TEST_CASE("relative at standstill: the target is the position at the enable plus
   kt::feed(*h.x, 30.0, 0.0, 0.0, 0);
   CHECK(h.cycles_until([&] { return kt::bit(*h.x, plc::kStateInTargetPosition); }, 500) > 0);
   CHECK(h.x->NcToPlc.SetPos == 80.0);
+}
+
+TEST_CASE("absolute: a fed motion crawling through the target window is not InTargetPosition",
+          "[ext_setpoint][target_window]") {
+  kt::Harness h;
+  h.post(kt::ext_enable(100.0, 1));
+  h.cycles(1);
+  // 0 → 101 mm at 100 mm/s: the last 30 cycles lie inside the 2 mm window around 100 while the
+  // generator still feeds a motion (direction +1) — more than the 20 ms window time.
+  for (int i = 1; i <= 1010; ++i) {
+    kt::feed(*h.x, 0.1 * i, 100.0, 0.0, 1);
+    h.cycles(1);
+    REQUIRE_FALSE(kt::bit(*h.x, plc::kStateInTargetPosition));
+  }
+  // The motion rests at 101 mm (direction 0): now the window counts, 20 samples.
+  kt::feed(*h.x, 101.0, 0.0, 0.0, 0);
+  CHECK(h.cycles_until([&] { return kt::bit(*h.x, plc::kStateInTargetPosition); }, 500) == 20);
 }

@@ -48,6 +48,8 @@ class ExternalSetpoint {
   bool enabled() const noexcept { return enabled_; }
   // Enabled, or in its one more cycle after the disable.
   bool taking() const noexcept { return enabled_ || final_cycle_; }
+  // The last packet taken had direction -1 or +1: the fed motion is under way.
+  bool moving() const noexcept { return enabled_ && was_moving_; }
   Type type() const noexcept { return type_; }
   double target() const noexcept { return target_; }
   const KinematicState& state() const noexcept { return state_; }

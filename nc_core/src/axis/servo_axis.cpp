@@ -121,8 +121,11 @@ void ServoAxis::run_monitors() noexcept {
       raise_error(ErrorCode::kSoftLimitMinDuringMotion);
     }
   }
+  // The windows count only once set-value generation rests: the job has ended and the external
+  // generator (seed 000 §2.6) is not feeding a motion (direction ±1), so a fed motion passing
+  // through its target window is not "in target position".
   const bool settled =
-      controller_enabled() &&
+      controller_enabled() && !external_.moving() &&
       (!job_.active() || (job_.kind() != JobKind::kVelocity && job_.generation_ended()));
   monitors_.windows(actual, target_, settled);
 }
