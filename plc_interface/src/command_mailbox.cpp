@@ -27,8 +27,7 @@ bool CommandMailbox::take(Command& out) noexcept {
   return true;
 }
 
-void CommandMailbox::set_answer(uint16_t number, CommandState state,
-                                uint32_t error_code) noexcept {
+void CommandMailbox::set_answer(uint16_t number, CommandState state, uint32_t error_code) noexcept {
   if (number == 0) return;
   answers_[number % kAnswerSlots] = CommandAnswer{number, state, error_code};
 }

@@ -80,7 +80,7 @@ struct NCTOPLC_AXIS_REF {
   double SetAcc = 0.0;
   double SetJerk = 0.0;
   double TargetPos = 0.0;
-  double TargetVelo = 0.0;  // the velocity level the running job aims at (after override)
+  double TargetVelo = 0.0;            // the velocity level the running job aims at (after override)
   double CompensationDistance = 0.0;  // compensation travelled so far (B7)
   uint32_t Warning = 0;               // last warning code (e.g. compensation incomplete)
   uint16_t CmdNo = 0;                 // command the axis executes
@@ -110,7 +110,9 @@ struct AXIS_REF {
   CommandMailbox Mailbox;
 };
 
-constexpr bool test_bit(uint32_t word, uint32_t bit) noexcept { return ((word >> bit) & 1U) != 0; }
+constexpr bool test_bit(uint32_t word, uint32_t bit) noexcept {
+  return ((word >> bit) & 1U) != 0;
+}
 constexpr uint32_t with_bit(uint32_t word, uint32_t bit, bool value) noexcept {
   return value ? (word | (1U << bit)) : (word & ~(1U << bit));
 }

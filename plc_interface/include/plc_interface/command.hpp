@@ -30,21 +30,21 @@ enum class CommandType : uint16_t {
   kAbortSuperposition = 12,    // compensation stop
   kExtSetPointGenEnable = 13,  // position = target for window monitoring, mode = position type
   kExtSetPointGenDisable = 14,
-  kGearIn = 15,                // ratio, other_axis = master
-  kGearInDyn = 16,             // ratio (initial), acceleration = AccBound, other_axis = master
+  kGearIn = 15,     // ratio, other_axis = master
+  kGearInDyn = 16,  // ratio (initial), acceleration = AccBound, other_axis = master
   kGearOut = 17,
-  kHome = 18,                  // position = home position, mode = homing mode
+  kHome = 18,  // position = home position, mode = homing mode
 };
 
 // Lifecycle of one command number, as the NC reports it in the answer table.
 enum class CommandState : uint16_t {
-  kFree = 0,      // slot unused / number unknown
-  kPosted = 1,    // in the mailbox, not yet seen by the NC
-  kActive = 2,    // accepted; the job runs (the axis executes this number)
-  kReached = 3,   // the job's goal is reached but it goes on (InVelocity, InGear, Enabled)
-  kDone = 4,      // the job has ended successfully (target reached, stopped, reset done)
-  kAborted = 5,   // a later command took over the axis before this job ended
-  kError = 6,     // refused at acceptance, or failed while running: see error_code
+  kFree = 0,     // slot unused / number unknown
+  kPosted = 1,   // in the mailbox, not yet seen by the NC
+  kActive = 2,   // accepted; the job runs (the axis executes this number)
+  kReached = 3,  // the job's goal is reached but it goes on (InVelocity, InGear, Enabled)
+  kDone = 4,     // the job has ended successfully (target reached, stopped, reset done)
+  kAborted = 5,  // a later command took over the axis before this job ended
+  kError = 6,    // refused at acceptance, or failed while running: see error_code
 };
 
 // One axis function with its parameters. Which fields a type uses is listed at CommandType;

@@ -69,12 +69,12 @@ enum class ErrorCode : uint32_t {
   kAxisNotReady = 0x4B09,
 
   // --- ncsdk's own numbers ---
-  kPositionNotFinite = 0x4F01,     // target, distance or start position NaN or infinite
-  kParameterNotFinite = 0x4F02,    // another parameter NaN or infinite
+  kPositionNotFinite = 0x4F01,   // target, distance or start position NaN or infinite
+  kParameterNotFinite = 0x4F02,  // another parameter NaN or infinite
   kBufferModeNotSupported = 0x4F03,
   kMailboxFull = 0x4F04,
   kUnknownCommand = 0x4F05,
-  kAxisInErrorState = 0x4F06,      // motion refused until MC_Reset
+  kAxisInErrorState = 0x4F06,  // motion refused until MC_Reset
   kDirectionInvalid = 0x4F07,
   kInvalidAxisReference = 0x4F08,  // partner axis index unknown
   kPlannerNoSolution = 0x4F09,     // the planner found no profile (internal; never expected)
@@ -88,7 +88,9 @@ enum class ErrorCode : uint32_t {
   kHliCouplingLoop = 70410,
 };
 
-constexpr uint32_t to_id(ErrorCode code) noexcept { return static_cast<uint32_t>(code); }
+constexpr uint32_t to_id(ErrorCode code) noexcept {
+  return static_cast<uint32_t>(code);
+}
 
 // A short text for every code; "unknown error code" for numbers outside the catalogue.
 std::string_view error_text(ErrorCode code) noexcept;
