@@ -12,7 +12,7 @@ void MC_ReadActualPosition::operator()(const plc::AXIS_REF& axis) noexcept {
   const bool finite = std::isfinite(position);
   Valid = Enable && finite;
   Error = Enable && !finite;
-  ErrorID = Error ? plc::to_id(plc::ErrorCode::kStateNotFinite) : 0;
+  ErrorID = Error ? plc::to_id(plc::ErrorCode::kActualValueNotFinite) : 0;
   Position = Valid ? position : 0.0;
 }
 

@@ -129,6 +129,8 @@ std::string_view error_text(ErrorCode code) noexcept {
       return "partner axis unknown";
     case E::kPlannerNoSolution:
       return "planner found no profile";
+    case E::kActualValueNotFinite:
+      return "actual value is not a finite number";
     case E::kStateNotFinite:
       return "start state is not finite";
     case E::kHliFractOnReferencedAxis:

@@ -128,7 +128,7 @@ TEST_CASE("MC_ReadActualPosition shows ActPos on every call while enabled", "[fb
   read(axis);
   REQUIRE_FALSE(read.Valid);
   REQUIRE(read.Error);
-  REQUIRE(read.ErrorID == 0x4F0A);
+  REQUIRE(read.ErrorID == 0x4F0B);
   REQUIRE(read.Position == 0.0);
 
   axis.NcToPlc.ActPos = 7.0;

@@ -2,7 +2,7 @@
 //
 // Enable-type block: while Enable is TRUE, Position = NcToPlc.ActPos on every call, with Valid
 // and Busy TRUE; with Enable FALSE every output is FALSE / 0. An actual position that is not a
-// finite number is not shown: Error with 0x4F0A (kStateNotFinite), Valid FALSE.
+// finite number is not shown: Error with 0x4F0B (kActualValueNotFinite), Valid FALSE.
 #pragma once
 
 #include <cstdint>

@@ -79,6 +79,7 @@ enum class ErrorCode : uint32_t {
   kInvalidAxisReference = 0x4F08,  // partner axis index unknown
   kPlannerNoSolution = 0x4F09,     // the planner found no profile (internal; never expected)
   kStateNotFinite = 0x4F0A,        // start state (p, v, a) NaN or infinite
+  kActualValueNotFinite = 0x4F0B,  // an actual value read by a block is NaN or infinite
 
   // --- CNC HLI coupling IDs (decimal) ---
   kHliFractOnReferencedAxis = 70195,
