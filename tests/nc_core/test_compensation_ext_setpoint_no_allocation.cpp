@@ -1,73 +1,18 @@
-// No allocation in the superpositions' cycle path (brief: real-time discipline): a counting
-// global operator new over a positioning with a compensation, its compensation stop, a stop
-// during a second compensation, and an external setpoint run (absolute and relative, enable,
-// feed, disable) counts 0 — commands posted, answered and packets taken inside the counted
+// No allocation in the superpositions' cycle path (brief: real-time
+// discipline): a counting global operator new over a positioning with a
+// compensation, its compensation stop, a stop during a second compensation, and
+// an external setpoint run (absolute and relative, enable, feed, disable)
+// counts 0 — commands posted, answered and packets taken inside the counted
 // region. Runs only in the plain build (the sanitizers own the allocator).
 #include <catch2/catch.hpp>
 
-#include <cstdlib>
-#include <new>
-
+#include "counting_allocator.hpp"
 #include "kernel_harness.hpp"
 
-namespace {
-bool g_counting = false;
-long g_allocations = 0;
-
-void* counted_alloc(std::size_t size) {
-  if (g_counting) ++g_allocations;
-  void* p = std::malloc(size == 0 ? 1 : size);
-  if (p == nullptr) throw std::bad_alloc();
-  return p;
-}
-void* counted_alloc_aligned(std::size_t size, std::align_val_t align) {
-  if (g_counting) ++g_allocations;
-  const auto a = static_cast<std::size_t>(align);
-  void* p = std::aligned_alloc(a, ((size == 0 ? 1 : size) + a - 1) / a * a);
-  if (p == nullptr) throw std::bad_alloc();
-  return p;
-}
-}  // namespace
-
-void* operator new(std::size_t size) {
-  return counted_alloc(size);
-}
-void* operator new[](std::size_t size) {
-  return counted_alloc(size);
-}
-void* operator new(std::size_t size, std::align_val_t a) {
-  return counted_alloc_aligned(size, a);
-}
-void* operator new[](std::size_t size, std::align_val_t a) {
-  return counted_alloc_aligned(size, a);
-}
-void operator delete(void* p) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::align_val_t) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p, std::align_val_t) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept {
-  std::free(p);
-}
-
-TEST_CASE("compensation, compensation stop, stop and external setpoints allocate nothing",
-          "[no_allocation][compensation][ext_setpoint]") {
+TEST_CASE(
+    "compensation, compensation stop, stop and external setpoints "
+    "allocate nothing",
+    "[no_allocation][compensation][ext_setpoint]") {
   kt::Harness h;
   kt::Harness lagging = [] {
     nc::AxisConfig c = kt::seed_axis("lag");
@@ -77,8 +22,8 @@ TEST_CASE("compensation, compensation stop, stop and external setpoints allocate
     c.following_error_limit = 50.0;
     return kt::Harness(c);
   }();
-  g_allocations = 0;
-  g_counting = true;
+  ca::g_allocations = 0;
+  ca::g_counting = true;
   for (kt::Harness* k : {&h, &lagging}) {
     k->post(kt::move_absolute(10000.0, 2000.0));
     k->cycles(600);
@@ -106,8 +51,8 @@ TEST_CASE("compensation, compensation stop, stop and external setpoints allocate
     k->post(kt::simple(plc::CommandType::kReset));
     k->cycles(10);
   }
-  g_counting = false;
-  CHECK(g_allocations == 0);
+  ca::g_counting = false;
+  CHECK(ca::g_allocations == 0);
   CHECK(h.x->NcToPlc.ErrorCode == 0);
   CHECK(lagging.x->NcToPlc.ErrorCode == 0);
 }

@@ -1,74 +1,19 @@
-// No allocation in the cycle path (brief, ARCHITECTURE "One tick"): a counting global operator
-// new over 10 000 NC cycles of 8 moving axes, with their MC_Power and MC_MoveAbsolute blocks
-// called every cycle, counts 0. Runs only in the plain build (the sanitizers own the allocator).
+// No allocation in the cycle path (brief, ARCHITECTURE "One tick"): a counting
+// global operator new over 10 000 NC cycles of 8 moving axes, with their
+// MC_Power and MC_MoveAbsolute blocks called every cycle, counts 0. Runs only
+// in the plain build (the sanitizers own the allocator).
 #include <catch2/catch.hpp>
 
 #include <array>
-#include <cstdlib>
-#include <new>
 #include <string>
 
+#include "counting_allocator.hpp"
 #include "fb/fb.hpp"
 #include "kernel_harness.hpp"
 
-namespace {
-bool g_counting = false;
-long g_allocations = 0;
-
-void* counted_alloc(std::size_t size) {
-  if (g_counting) ++g_allocations;
-  void* p = std::malloc(size == 0 ? 1 : size);
-  if (p == nullptr) throw std::bad_alloc();
-  return p;
-}
-void* counted_alloc_aligned(std::size_t size, std::align_val_t align) {
-  if (g_counting) ++g_allocations;
-  const auto a = static_cast<std::size_t>(align);
-  void* p = std::aligned_alloc(a, ((size == 0 ? 1 : size) + a - 1) / a * a);
-  if (p == nullptr) throw std::bad_alloc();
-  return p;
-}
-}  // namespace
-
-void* operator new(std::size_t size) {
-  return counted_alloc(size);
-}
-void* operator new[](std::size_t size) {
-  return counted_alloc(size);
-}
-void* operator new(std::size_t size, std::align_val_t a) {
-  return counted_alloc_aligned(size, a);
-}
-void* operator new[](std::size_t size, std::align_val_t a) {
-  return counted_alloc_aligned(size, a);
-}
-void operator delete(void* p) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::align_val_t) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p, std::align_val_t) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept {
-  std::free(p);
-}
-
 TEST_CASE(
-    "10000 cycles of 8 moving axes with their MC_Power and MC_MoveAbsolute blocks "
+    "10000 cycles of 8 moving axes with their MC_Power and "
+    "MC_MoveAbsolute blocks "
     "allocate nothing",
     "[no_allocation]") {
   constexpr int kAxes = 8;
@@ -88,14 +33,14 @@ TEST_CASE(
   std::array<int, kAxes> done_count{};
 
   // Sanity check of the counter itself: it sees an allocation when one happens.
-  g_counting = true;
+  ca::g_counting = true;
   auto* probe = new int(7);
-  g_counting = false;
+  ca::g_counting = false;
   delete probe;
-  REQUIRE(g_allocations == 1);
-  g_allocations = 0;
+  REQUIRE(ca::g_allocations == 1);
+  ca::g_allocations = 0;
 
-  g_counting = true;
+  ca::g_counting = true;
   for (int cycle = 0; cycle < 10000; ++cycle) {
     for (std::size_t i = 0; i < kAxes; ++i) {
       plc::AXIS_REF& axis = *axes[i];
@@ -116,9 +61,9 @@ TEST_CASE(
     }
     kernel.cycle();
   }
-  g_counting = false;
+  ca::g_counting = false;
 
-  CHECK(g_allocations == 0);
+  CHECK(ca::g_allocations == 0);
   for (std::size_t i = 0; i < kAxes; ++i) {
     INFO("axis " << i);
     CHECK(done_count[i] >= 8);  // the axes really moved back and forth

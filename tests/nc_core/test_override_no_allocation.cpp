@@ -1,76 +1,21 @@
-// No allocation in the online functions (brief: real-time discipline in the cycle path): a
-// counting global operator new over 20 000 NC cycles in which the override changes, new end
-// positions and new velocities (all six cases' kinds, pending activations), modulo starts,
-// velocity moves, halts and stops act on a moving axis, counts 0. Runs only in the plain build
-// (the sanitizers own the allocator).
+// No allocation in the online functions (brief: real-time discipline in the
+// cycle path): a counting global operator new over 20 000 NC cycles in which
+// the override changes, new end positions and new velocities (all six cases'
+// kinds, pending activations), modulo starts, velocity moves, halts and stops
+// act on a moving axis, counts 0. Runs only in the plain build (the sanitizers
+// own the allocator).
 #include <catch2/catch.hpp>
 
-#include <cstdlib>
-#include <new>
-
+#include "counting_allocator.hpp"
 #include "kernel_harness.hpp"
 
-namespace {
-bool g_counting = false;
-long g_allocations = 0;
-
-void* counted_alloc(std::size_t size) {
-  if (g_counting) ++g_allocations;
-  void* p = std::malloc(size == 0 ? 1 : size);
-  if (p == nullptr) throw std::bad_alloc();
-  return p;
-}
-void* counted_alloc_aligned(std::size_t size, std::align_val_t align) {
-  if (g_counting) ++g_allocations;
-  const auto a = static_cast<std::size_t>(align);
-  void* p = std::aligned_alloc(a, ((size == 0 ? 1 : size) + a - 1) / a * a);
-  if (p == nullptr) throw std::bad_alloc();
-  return p;
-}
-}  // namespace
-
-void* operator new(std::size_t size) {
-  return counted_alloc(size);
-}
-void* operator new[](std::size_t size) {
-  return counted_alloc(size);
-}
-void* operator new(std::size_t size, std::align_val_t a) {
-  return counted_alloc_aligned(size, a);
-}
-void* operator new[](std::size_t size, std::align_val_t a) {
-  return counted_alloc_aligned(size, a);
-}
-void operator delete(void* p) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::align_val_t) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p, std::align_val_t) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept {
-  std::free(p);
-}
-
-TEST_CASE("override, new end positions, new velocities, modulo starts and stops allocate nothing",
-          "[no_allocation][override][new_pos][modulo]") {
+TEST_CASE(
+    "override, new end positions, new velocities, modulo starts and "
+    "stops allocate nothing",
+    "[no_allocation][override][new_pos][modulo]") {
   kt::Harness h;
   plc::AXIS_REF& x = *h.x;
-  g_counting = true;
+  ca::g_counting = true;
   for (int k = 0; k < 20000; ++k) {
     switch (k % 2000) {
       case 0:
@@ -112,7 +57,7 @@ TEST_CASE("override, new end positions, new velocities, modulo starts and stops 
     }
     h.kernel.cycle();
   }
-  g_counting = false;
-  CHECK(g_allocations == 0);
+  ca::g_counting = false;
+  CHECK(ca::g_allocations == 0);
   CHECK(x.NcToPlc.ErrorCode == 0);
 }
