@@ -7,8 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "kernel_harness.hpp"
+#include "refusal_check.hpp"
 
+using kt::Bad;
+using kt::with;
 using plc::CommandState;
 using plc::CommandType;
 using plc::ErrorCode;
@@ -18,63 +20,9 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// Vmax 2200, Vref 2100 (so "above Vref" and "above Vmax" are separate cases); software limits
-// ±100000 enabled.
-nc::AxisConfig refusal_axis() {
-  nc::AxisConfig c = kt::seed_axis();
-  c.ref_velocity = 2100.0;
-  c.sw_limit_min_enabled = true;
-  c.sw_limit_max_enabled = true;
-  c.sw_limit_min = -100000.0;
-  c.sw_limit_max = 100000.0;
-  return c;
-}
-
-struct Twins {
-  kt::Harness probe{refusal_axis()};
-  kt::Harness reference{refusal_axis()};
-
-  void both(const plc::Command& c) {
-    probe.post(c);
-    reference.post(c);
-  }
-  void cycles(int n) {
-    for (int i = 0; i < n; ++i) {
-      probe.kernel.cycle();
-      reference.kernel.cycle();
-    }
-  }
-  void enables(bool enable, bool plus, bool minus) {
-    kt::set_enables(*probe.x, enable, plus, minus);
-    kt::set_enables(*reference.x, enable, plus, minus);
-  }
-};
-
-struct Bad {
-  std::string what;
-  plc::Command command;
-  ErrorCode expected;
-};
-
-// Posts `bad` to the probe only and checks the refusal and that nothing else differs, in the
-// cycle of the refusal and for 100 cycles after it.
-void expect_refused_without_effect(Twins& t, const Bad& bad) {
-  INFO(bad.what);
-  const uint16_t n = t.probe.post(bad.command);
-  t.cycles(1);
-  const plc::CommandAnswer answer = t.probe.answer(n);
-  CHECK(answer.state == CommandState::kError);
-  CHECK(answer.error_code == kt::id(bad.expected));
-  for (int i = 0; i < 100; ++i) {
-    REQUIRE(kt::same_image(t.probe.x->NcToPlc, t.reference.x->NcToPlc));
-    t.cycles(1);
-  }
-  REQUIRE(kt::same_image(t.probe.x->NcToPlc, t.reference.x->NcToPlc));
-}
-
-plc::Command with(plc::Command c, double plc::Command::*field, double value) {
-  c.*field = value;
-  return c;
+// The images are compared for 100 cycles after each refusal.
+void expect_refused(kt::TwinKernels& t, const Bad& bad) {
+  kt::expect_refused_without_effect(t, bad, 100);
 }
 
 std::vector<Bad> bad_dynamics(const plc::Command& good, const std::string& name) {
@@ -133,7 +81,7 @@ TEST_CASE(
     "bad MoveAbsolute, MoveRelative, MoveVelocity, Halt and Stop inputs are refused with "
     "their code and disturb nothing",
     "[kernel][refusals]") {
-  Twins t;
+  kt::TwinKernels t(kt::refusal_axis());
   t.both(kt::move_velocity(1000.0, 1));
   t.cycles(300);  // moving at 1000 mm/s
 
@@ -179,7 +127,7 @@ TEST_CASE(
     bads.push_back(b);
 
   for (const Bad& b : bads)
-    expect_refused_without_effect(t, b);
+    expect_refused(t, b);
   // The axis was moving the whole time and still is.
   CHECK(t.probe.x->NcToPlc.SetVelo == 1000.0);
 }
@@ -189,34 +137,34 @@ TEST_CASE(
     "refused with 0x4223",
     "[kernel][refusals]") {
   SECTION("feed enable plus missing while a negative move runs") {
-    Twins t;
+    kt::TwinKernels t(kt::refusal_axis());
     t.enables(true, false, true);
     t.both(kt::move_absolute(-3000.0, 1000.0));
     t.cycles(300);
-    expect_refused_without_effect(t, {"positive MoveAbsolute", kt::move_absolute(100.0, 500.0),
-                                      ErrorCode::kNoControllerOrFeedEnable});
-    expect_refused_without_effect(t, {"positive MoveVelocity", kt::move_velocity(500.0, 1),
-                                      ErrorCode::kNoControllerOrFeedEnable});
+    expect_refused(t, {"positive MoveAbsolute", kt::move_absolute(100.0, 500.0),
+                       ErrorCode::kNoControllerOrFeedEnable});
+    expect_refused(t, {"positive MoveVelocity", kt::move_velocity(500.0, 1),
+                       ErrorCode::kNoControllerOrFeedEnable});
     CHECK(t.probe.x->NcToPlc.SetVelo < -900.0);
   }
   SECTION("feed enable minus missing while a positive move runs") {
-    Twins t;
+    kt::TwinKernels t(kt::refusal_axis());
     t.enables(true, true, false);
     t.both(kt::move_absolute(3000.0, 1000.0));
     t.cycles(300);
-    expect_refused_without_effect(t, {"negative MoveRelative", kt::move_relative(-2000.0, 500.0),
-                                      ErrorCode::kNoControllerOrFeedEnable});
-    expect_refused_without_effect(t, {"negative MoveVelocity", kt::move_velocity(500.0, 3),
-                                      ErrorCode::kNoControllerOrFeedEnable});
+    expect_refused(t, {"negative MoveRelative", kt::move_relative(-2000.0, 500.0),
+                       ErrorCode::kNoControllerOrFeedEnable});
+    expect_refused(t, {"negative MoveVelocity", kt::move_velocity(500.0, 3),
+                       ErrorCode::kNoControllerOrFeedEnable});
   }
   SECTION("controller enable missing") {
-    Twins t;
+    kt::TwinKernels t(kt::refusal_axis());
     t.enables(false, true, true);
     t.cycles(5);
     for (const plc::Command& c : {kt::move_absolute(100.0, 500.0), kt::move_relative(-100.0, 500.0),
                                   kt::move_velocity(500.0, 1), kt::simple(CommandType::kHalt),
                                   kt::simple(CommandType::kStop)}) {
-      expect_refused_without_effect(t, {"disabled", c, ErrorCode::kNoControllerOrFeedEnable});
+      expect_refused(t, {"disabled", c, ErrorCode::kNoControllerOrFeedEnable});
     }
     CHECK(kt::axis_state(*t.probe.x) == plc::AxisState::kDisabled);
     CHECK_FALSE(kt::bit(*t.probe.x, plc::kStateOperational));
@@ -224,20 +172,20 @@ TEST_CASE(
 }
 
 TEST_CASE("motion commands on a locked axis are refused with 0x42EF", "[kernel][refusals]") {
-  Twins t;
+  kt::TwinKernels t(kt::refusal_axis());
   t.both(kt::move_velocity(1000.0, 1));
   t.cycles(300);
   t.both(kt::simple(CommandType::kStop));
   t.cycles(20);  // still stopping
   for (const plc::Command& c : {kt::move_absolute(100.0, 500.0), kt::move_relative(-100.0, 500.0),
                                 kt::move_velocity(500.0, 1), kt::simple(CommandType::kHalt)}) {
-    expect_refused_without_effect(t, {"locked", c, ErrorCode::kMotionCommandsLocked});
+    expect_refused(t, {"locked", c, ErrorCode::kMotionCommandsLocked});
   }
 }
 
 TEST_CASE("motion commands on an axis in error are refused with kAxisInErrorState",
           "[kernel][refusals]") {
-  Twins t;
+  kt::TwinKernels t(kt::refusal_axis());
   t.both(kt::move_velocity(1000.0, 1));
   t.cycles(300);
   // Feed enable plus removed while moving forward: axis error 0x4358, emergency ramp.
@@ -248,13 +196,13 @@ TEST_CASE("motion commands on an axis in error are refused with kAxisInErrorStat
   for (const plc::Command& c : {kt::move_absolute(100.0, 500.0), kt::move_relative(-100.0, 500.0),
                                 kt::move_velocity(500.0, 3), kt::simple(CommandType::kHalt),
                                 kt::simple(CommandType::kStop)}) {
-    expect_refused_without_effect(t, {"in error", c, ErrorCode::kAxisInErrorState});
+    expect_refused(t, {"in error", c, ErrorCode::kAxisInErrorState});
   }
 }
 
 TEST_CASE("MoveVelocity outward from a software limit it stands on is refused with 0x4460/0x4461",
           "[kernel][refusals]") {
-  nc::AxisConfig at_max = refusal_axis();
+  nc::AxisConfig at_max = kt::refusal_axis();
   at_max.sw_limit_max = 0.0;
   kt::Harness h(at_max);
   const uint16_t up = h.post(kt::move_velocity(100.0, 1));
@@ -266,7 +214,7 @@ TEST_CASE("MoveVelocity outward from a software limit it stands on is refused wi
   h.cycles(1);
   CHECK(h.state_of(back) == CommandState::kActive);
 
-  nc::AxisConfig at_min = refusal_axis();
+  nc::AxisConfig at_min = kt::refusal_axis();
   at_min.sw_limit_min = 0.0;
   kt::Harness g(at_min);
   const uint16_t down = g.post(kt::move_velocity(100.0, 3));

@@ -7,9 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "kernel_harness.hpp"
+#include "refusal_check.hpp"
 
-using plc::CommandState;
+using kt::Bad;
+using kt::with;
 using plc::CommandType;
 using plc::ErrorCode;
 
@@ -18,46 +19,16 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// Vmax 2200, Vref 2100, software limits ±100000 enabled, modulo factor 360.
-nc::AxisConfig refusal_axis() {
-  nc::AxisConfig c = kt::seed_axis();
-  c.ref_velocity = 2100.0;
-  c.sw_limit_min_enabled = true;
-  c.sw_limit_max_enabled = true;
-  c.sw_limit_min = -100000.0;
-  c.sw_limit_max = 100000.0;
-  return c;
-}
-
-struct Bad {
-  std::string what;
-  plc::Command command;
-  ErrorCode expected;
-};
-
-void expect_refused_without_effect(kt::TwinKernels& t, const Bad& bad) {
-  INFO(bad.what);
-  const uint16_t n = t.probe.post(bad.command);
-  t.cycles(1);
-  CHECK(t.probe.answer(n).state == CommandState::kError);
-  CHECK(t.probe.answer(n).error_code == kt::id(bad.expected));
-  for (int i = 0; i < 50; ++i) {
-    REQUIRE(t.same());
-    t.cycles(1);
-  }
-  REQUIRE(t.same());
-}
-
-plc::Command with(plc::Command c, double plc::Command::*field, double value) {
-  c.*field = value;
-  return c;
+// The images are compared for 50 cycles after each refusal.
+void expect_refused(kt::TwinKernels& t, const Bad& bad) {
+  kt::expect_refused_without_effect(t, bad, 50);
 }
 
 }  // namespace
 
 TEST_CASE("bad MoveModulo inputs are refused with their code and disturb nothing",
           "[modulo][refusals]") {
-  kt::TwinKernels t(refusal_axis());
+  kt::TwinKernels t(kt::refusal_axis());
   t.both(kt::move_velocity(1000.0, 1));
   t.cycles(300);
   using C = plc::Command;
@@ -103,36 +74,34 @@ TEST_CASE("bad MoveModulo inputs are refused with their code and disturb nothing
   buffered.buffer_mode = 1;
   bads.push_back({"buffered", buffered, ErrorCode::kBufferModeNotSupported});
   for (const Bad& b : bads)
-    expect_refused_without_effect(t, b);
+    expect_refused(t, b);
   CHECK(t.probe.x->NcToPlc.SetVelo == 1000.0);
 }
 
 TEST_CASE("MoveModulo with MC_Current_Direction at standstill is refused with kDirectionInvalid",
           "[modulo][refusals]") {
-  kt::TwinKernels t(refusal_axis());
+  kt::TwinKernels t(kt::refusal_axis());
   t.cycles(5);
-  expect_refused_without_effect(t, {"current direction at rest", kt::move_modulo(90.0, 1000.0, 4),
-                                    ErrorCode::kDirectionInvalid});
+  expect_refused(t, {"current direction at rest", kt::move_modulo(90.0, 1000.0, 4),
+                     ErrorCode::kDirectionInvalid});
 }
 
 TEST_CASE("MoveModulo on a locked axis or an axis in error is refused", "[modulo][refusals]") {
   SECTION("locked by MC_Stop") {
-    kt::TwinKernels t(refusal_axis());
+    kt::TwinKernels t(kt::refusal_axis());
     t.both(kt::move_velocity(1000.0, 1));
     t.cycles(300);
     t.both(kt::simple(CommandType::kStop));
     t.cycles(20);
-    expect_refused_without_effect(
-        t, {"locked", kt::move_modulo(90.0, 1000.0, 1), ErrorCode::kMotionCommandsLocked});
+    expect_refused(t,
+                   {"locked", kt::move_modulo(90.0, 1000.0, 1), ErrorCode::kMotionCommandsLocked});
   }
   SECTION("in error") {
-    kt::TwinKernels t(refusal_axis());
+    kt::TwinKernels t(kt::refusal_axis());
     t.both(kt::move_velocity(1000.0, 1));
     t.cycles(300);
-    kt::set_enables(*t.probe.x, true, false, true);
-    kt::set_enables(*t.reference.x, true, false, true);
+    t.enables(true, false, true);
     t.cycles(2);
-    expect_refused_without_effect(
-        t, {"in error", kt::move_modulo(90.0, 1000.0, 3), ErrorCode::kAxisInErrorState});
+    expect_refused(t, {"in error", kt::move_modulo(90.0, 1000.0, 3), ErrorCode::kAxisInErrorState});
   }
 }

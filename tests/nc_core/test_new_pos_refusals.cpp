@@ -7,8 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "kernel_harness.hpp"
+#include "refusal_check.hpp"
 
+using kt::Bad;
 using plc::CommandState;
 using plc::CommandType;
 using plc::ErrorCode;
@@ -18,34 +19,9 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// Vmax 2200, Vref 2100, software limits ±100000 enabled.
-nc::AxisConfig refusal_axis() {
-  nc::AxisConfig c = kt::seed_axis();
-  c.ref_velocity = 2100.0;
-  c.sw_limit_min_enabled = true;
-  c.sw_limit_max_enabled = true;
-  c.sw_limit_min = -100000.0;
-  c.sw_limit_max = 100000.0;
-  return c;
-}
-
-struct Bad {
-  std::string what;
-  plc::Command command;
-  ErrorCode expected;
-};
-
-void expect_refused_without_effect(kt::TwinKernels& t, const Bad& bad) {
-  INFO(bad.what);
-  const uint16_t n = t.probe.post(bad.command);
-  t.cycles(1);
-  CHECK(t.probe.answer(n).state == CommandState::kError);
-  CHECK(t.probe.answer(n).error_code == kt::id(bad.expected));
-  for (int i = 0; i < 50; ++i) {
-    REQUIRE(t.same());
-    t.cycles(1);
-  }
-  REQUIRE(t.same());
+// The images are compared for 50 cycles after each refusal.
+void expect_refused(kt::TwinKernels& t, const Bad& bad) {
+  kt::expect_refused_without_effect(t, bad, 50);
 }
 
 std::vector<Bad> bad_inputs() {
@@ -82,89 +58,83 @@ std::vector<Bad> bad_inputs() {
 
 TEST_CASE("bad NewPos and NewPosAndVelo inputs during a positioning are refused with their code",
           "[new_pos][new_pos_and_velo][refusals]") {
-  kt::TwinKernels t(refusal_axis());
+  kt::TwinKernels t(kt::refusal_axis());
   t.both(kt::move_absolute(50000.0, 1000.0));
   t.cycles(300);
   for (const Bad& b : bad_inputs())
-    expect_refused_without_effect(t, b);
+    expect_refused(t, b);
   CHECK(t.probe.x->NcToPlc.SetVelo == Approx(1000.0).margin(1e-9));
 }
 
 TEST_CASE("without a positioning job NewPos and NewPosAndVelo are refused with 0x424E",
           "[new_pos][new_pos_and_velo][refusals]") {
   SECTION("at standstill") {
-    kt::TwinKernels t(refusal_axis());
+    kt::TwinKernels t(kt::refusal_axis());
     t.cycles(5);
-    expect_refused_without_effect(t,
-                                  {"NewPos", kt::new_pos(100.0), ErrorCode::kFunctionNotAllowed});
-    expect_refused_without_effect(t, {"NewPosAndVelo", kt::new_pos_and_velo(100.0, 500.0, 50.0),
-                                      ErrorCode::kFunctionNotAllowed});
+    expect_refused(t, {"NewPos", kt::new_pos(100.0), ErrorCode::kFunctionNotAllowed});
+    expect_refused(t, {"NewPosAndVelo", kt::new_pos_and_velo(100.0, 500.0, 50.0),
+                       ErrorCode::kFunctionNotAllowed});
   }
   SECTION("during a velocity move") {
-    kt::TwinKernels t(refusal_axis());
+    kt::TwinKernels t(kt::refusal_axis());
     t.both(kt::move_velocity(1000.0, 1));
     t.cycles(300);
-    expect_refused_without_effect(t,
-                                  {"NewPos", kt::new_pos(100.0), ErrorCode::kFunctionNotAllowed});
-    expect_refused_without_effect(t, {"NewPosAndVelo", kt::new_pos_and_velo(100.0, 500.0, 50.0),
-                                      ErrorCode::kFunctionNotAllowed});
+    expect_refused(t, {"NewPos", kt::new_pos(100.0), ErrorCode::kFunctionNotAllowed});
+    expect_refused(t, {"NewPosAndVelo", kt::new_pos_and_velo(100.0, 500.0, 50.0),
+                       ErrorCode::kFunctionNotAllowed});
   }
 }
 
 TEST_CASE("while a stop is active NewPos and NewPosAndVelo are refused with 0x4242",
           "[new_pos][new_pos_and_velo][refusals]") {
   for (CommandType stop : {CommandType::kStop, CommandType::kHalt}) {
-    kt::TwinKernels t(refusal_axis());
+    kt::TwinKernels t(kt::refusal_axis());
     t.both(kt::move_absolute(50000.0, 1000.0));
     t.cycles(300);
     t.both(kt::simple(stop));
     t.cycles(20);
-    expect_refused_without_effect(t, {"NewPos", kt::new_pos(100.0), ErrorCode::kStopAlreadyActive});
-    expect_refused_without_effect(t, {"NewPosAndVelo", kt::new_pos_and_velo(100.0, 500.0, 50.0),
-                                      ErrorCode::kStopAlreadyActive});
+    expect_refused(t, {"NewPos", kt::new_pos(100.0), ErrorCode::kStopAlreadyActive});
+    expect_refused(t, {"NewPosAndVelo", kt::new_pos_and_velo(100.0, 500.0, 50.0),
+                       ErrorCode::kStopAlreadyActive});
   }
 }
 
 TEST_CASE("on an axis in error NewPos and NewPosAndVelo are refused with kAxisInErrorState",
           "[new_pos][new_pos_and_velo][refusals]") {
-  kt::TwinKernels t(refusal_axis());
+  kt::TwinKernels t(kt::refusal_axis());
   t.both(kt::move_absolute(50000.0, 1000.0));
   t.cycles(300);
-  kt::set_enables(*t.probe.x, true, false, true);  // feed enable plus gone: error 0x4358
-  kt::set_enables(*t.reference.x, true, false, true);
+  t.enables(true, false, true);  // feed enable plus gone: error 0x4358
   t.cycles(2);
   REQUIRE(t.probe.x->NcToPlc.ErrorCode == kt::id(ErrorCode::kFeedEnablePlusMissing));
-  expect_refused_without_effect(t, {"NewPos", kt::new_pos(100.0), ErrorCode::kAxisInErrorState});
-  expect_refused_without_effect(
+  expect_refused(t, {"NewPos", kt::new_pos(100.0), ErrorCode::kAxisInErrorState});
+  expect_refused(
       t, {"NewPosAndVelo", kt::new_pos_and_velo(100.0, 500.0, 50.0), ErrorCode::kAxisInErrorState});
 }
 
 TEST_CASE("a new end position needing a direction without feed enable is refused with 0x4223",
           "[new_pos][new_pos_and_velo][refusals]") {
-  kt::TwinKernels t(refusal_axis());
-  kt::set_enables(*t.probe.x, true, true, false);
-  kt::set_enables(*t.reference.x, true, true, false);
+  kt::TwinKernels t(kt::refusal_axis());
+  t.enables(true, true, false);
   t.both(kt::move_absolute(50000.0, 1000.0));
   t.cycles(300);
-  expect_refused_without_effect(
-      t, {"NewPos behind", kt::new_pos(-100.0), ErrorCode::kNoControllerOrFeedEnable});
-  expect_refused_without_effect(t,
-                                {"NewPosAndVelo behind", kt::new_pos_and_velo(-100.0, 500.0, 0.0),
-                                 ErrorCode::kNoControllerOrFeedEnable});
+  expect_refused(t, {"NewPos behind", kt::new_pos(-100.0), ErrorCode::kNoControllerOrFeedEnable});
+  expect_refused(t, {"NewPosAndVelo behind", kt::new_pos_and_velo(-100.0, 500.0, 0.0),
+                     ErrorCode::kNoControllerOrFeedEnable});
 }
 
 TEST_CASE("during a position compensation NewPos and NewPosAndVelo are refused with 0x4245",
           "[new_pos][new_pos_and_velo][refusals]") {
   // Seed 000 §2.3 / §2.4: not while a compensation runs (D 250, VK 300, AK± 500 / 1000, VP 2000,
   // L 5000).
-  kt::TwinKernels t(refusal_axis());
+  kt::TwinKernels t(kt::refusal_axis());
   t.both(kt::move_absolute(50000.0, 1000.0));
   t.cycles(300);
   const uint16_t compensation =
       t.both(kt::move_superimposed(250.0, 300.0, 500.0, 1000.0, 2000.0, 5000.0));
   t.cycles(10);
   REQUIRE(t.probe.state_of(compensation) == CommandState::kActive);
-  expect_refused_without_effect(t, {"NewPos", kt::new_pos(100.0), ErrorCode::kCompensationActive});
-  expect_refused_without_effect(t, {"NewPosAndVelo", kt::new_pos_and_velo(100.0, 500.0, 50.0),
-                                    ErrorCode::kCompensationActive});
+  expect_refused(t, {"NewPos", kt::new_pos(100.0), ErrorCode::kCompensationActive});
+  expect_refused(t, {"NewPosAndVelo", kt::new_pos_and_velo(100.0, 500.0, 50.0),
+                     ErrorCode::kCompensationActive});
 }

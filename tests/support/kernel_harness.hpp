@@ -315,6 +315,11 @@ struct TwinKernels {
       reference.kernel.cycle();
     }
   }
+  // The same enables on both (see set_enables).
+  void enables(bool enable, bool plus, bool minus) {
+    set_enables(*probe.x, enable, plus, minus);
+    set_enables(*reference.x, enable, plus, minus);
+  }
   bool same() const { return same_image(probe.x->NcToPlc, reference.x->NcToPlc); }
 };
 
