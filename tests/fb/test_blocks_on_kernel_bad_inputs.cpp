@@ -1,8 +1,9 @@
-// Every bad input of every block, sent to the real kernel while another block's move runs (and
-// again at standstill after it), gives Error with its specific ErrorID — and changes nothing:
-// the NC→PLC image is bit-identical, cycle by cycle, to the same program run without the bad
-// command, and the running move ends exactly as it does there (brief: "a refused command does
-// not change the axis"; SPEC A4; seed 000 §2.1 table 2 and notes 4, 5).
+// Every bad input of every block, sent to the real kernel while another block's
+// move runs (and again at standstill after it), gives Error with its specific
+// ErrorID — and changes nothing: the NC→PLC image is bit-identical, cycle by
+// cycle, to the same program run without the bad command, and the running move
+// ends exactly as it does there (brief: "a refused command does not change the
+// axis"; SPEC A4; seed 000 §2.1 table 2 and notes 4, 5).
 #include <catch2/catch.hpp>
 
 #include <cstdint>
@@ -13,23 +14,22 @@
 
 #include "fb/fb.hpp"
 #include "nc_core/axis_config.hpp"
-#include "nc_core/cycle_driver.hpp"
-#include "nc_core/kernel.hpp"
+#include "twin_run.hpp"
 
 namespace {
+
+using twin::kMoveSpeed;
+using twin::kMoveTarget;
+using twin::Shown;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-constexpr double kCycle = 0.001;         // s
-constexpr uint64_t kRunTicks = 3'200;    // the move ends at about 2.1 s
 constexpr double kSwLimitMin = -500.0;   // mm
 constexpr double kSwLimitMax = 3'000.0;  // mm
-constexpr double kMoveTarget = 2'000.0;  // mm, the seed's MoveAxis target (§4.3)
-constexpr double kMoveSpeed = 1'000.0;   // mm/s
 
-// Which of the two velocity limits is the lower one: a velocity between them is above exactly
-// one of them.
+// Which of the two velocity limits is the lower one: a velocity between them is
+// above exactly one of them.
 enum class Limit { kRefBelowMax, kMaxBelowRef };
 
 nc::AxisConfig axis_config(Limit limit) {
@@ -44,7 +44,8 @@ nc::AxisConfig axis_config(Limit limit) {
   return c;
 }
 
-// Every block that can carry a bad input, each with valid inputs; a case spoils one of them.
+// Every block that can carry a bad input, each with valid inputs; a case spoils
+// one of them.
 struct Blocks {
   Blocks() {
     abs.Position = 1'000.0;
@@ -71,12 +72,6 @@ struct Case {
   Limit limit = Limit::kRefBelowMax;
 };
 
-// What the bad block shows.
-struct Shown {
-  bool busy = false, error = false;
-  uint32_t error_id = 0;
-};
-
 Shown call_bad(Which which, Blocks& b, fb::MC_Power& power, plc::AXIS_REF& axis, bool execute) {
   auto run = [&](auto& block) {
     block.Execute = execute;
@@ -100,7 +95,8 @@ Shown call_bad(Which which, Blocks& b, fb::MC_Power& power, plc::AXIS_REF& axis,
   return {};
 }
 
-// The NC→PLC image of one cycle, every field the kernel publishes (bar the cycle counter).
+// The NC→PLC image of one cycle, every field the kernel publishes (bar the
+// cycle counter).
 struct Sample {
   uint32_t state_dword, error_code, axis_state, warning;
   double act_pos, act_velo, pos_diff, set_pos, set_velo, set_acc, set_jerk, target_pos;
@@ -129,57 +125,25 @@ Sample sample(const plc::AXIS_REF& axis) {
                 axis.PlcToNc.ControlDWord};
 }
 
-struct Run {
-  std::vector<Sample> trace;
-  int64_t move_done_tick = -1;
-  bool move_aborted_or_failed = false;
-  std::vector<Shown> bad;  // the bad block's outputs from the injection on
-};
+using Run = twin::Run<Sample>;
 
-// The PLC program: enable the axis, move to 2000 mm; at `inject` (if a case is given) the bad
-// block gets its rising edge, and is then called with Execute held high.
+// The program of twin_run.hpp; at `inject` (if a case is given) the bad block
+// gets its rising edge, and is then called with Execute held high.
 Run run(const Case* bad, uint64_t inject, Limit limit) {
-  nc::Kernel kernel(nc::KernelConfig{kCycle});
-  plc::AXIS_REF& axis = kernel.add_axis(axis_config(limit));
-  nc::CycleDriver driver(kernel);
-
-  fb::MC_Power power;
-  fb::MC_MoveAbsolute move;
   Blocks blocks;
-  Run result;
-  result.trace.reserve(kRunTicks);
-
-  driver.add_task("plc", kCycle, [&] {
-    const uint64_t tick = driver.ticks();
-    power.Enable = true;
-    power.Enable_Positive = true;
-    power.Enable_Negative = true;
-    if (bad != nullptr && tick == inject) bad->spoil(blocks, power);
-    power(axis);
-
-    move.Position = kMoveTarget;
-    move.Velocity = kMoveSpeed;
-    move.Execute = tick >= 2;  // after the enables are in
-    move(axis);
-    if (move.Done && result.move_done_tick < 0) result.move_done_tick = static_cast<int64_t>(tick);
-    if (move.CommandAborted || move.Error) result.move_aborted_or_failed = true;
-
-    if (bad != nullptr && tick >= inject) {
-      result.bad.push_back(call_bad(bad->which, blocks, power, axis, true));
-    }
-  });
-  for (uint64_t i = 0; i < kRunTicks; ++i) {
-    driver.tick();
-    result.trace.push_back(sample(axis));
-  }
-  return result;
+  const twin::Injection injection{inject, [&](fb::MC_Power& power) { bad->spoil(blocks, power); },
+                                  [&](fb::MC_Power& power, plc::AXIS_REF& axis) {
+                                    return call_bad(bad->which, blocks, power, axis, true);
+                                  }};
+  return twin::run_program(axis_config(limit), sample, bad != nullptr ? &injection : nullptr);
 }
 
 std::vector<Case> cases() {
   std::vector<Case> c;
   using W = Which;
-  // A bad value for a velocity-like input: NaN and ±inf (0x4F02), 0 and negative (0x4231),
-  // above the reference (and max) velocity and above the max velocity only (0x4221).
+  // A bad value for a velocity-like input: NaN and ±inf (0x4F02), 0 and
+  // negative (0x4231), above the reference (and max) velocity and above the max
+  // velocity only (0x4221).
   auto velocity_cases = [&](const std::string& block, W which,
                             std::function<void(Blocks&, double)> set) {
     const struct {
@@ -201,8 +165,8 @@ std::vector<Case> cases() {
                    [set, v](Blocks& b, fb::MC_Power&) { set(b, v); }, r.code, r.limit});
     }
   };
-  // Acceleration, Deceleration, Jerk: NaN and ±inf (0x4F02), negative (0x422F / 0x4230 /
-  // 0x422E); 0 means the axis default and is valid.
+  // Acceleration, Deceleration, Jerk: NaN and ±inf (0x4F02), negative (0x422F /
+  // 0x4230 / 0x422E); 0 means the axis default and is valid.
   auto dynamics_cases = [&](const std::string& block, W which, const std::string& input,
                             uint32_t negative_code, std::function<void(Blocks&, double)> set) {
     const struct {
@@ -265,7 +229,8 @@ std::vector<Case> cases() {
                  [](Blocks& b, double v) { b.velo.Velocity = v; });
   move_dynamics("MC_MoveVelocity", W::kMoveVelocity,
                 [](Blocks& b) -> fb::MC_MoveVelocity& { return b.velo; });
-  // MC_Current_Direction is a valid direction (keep the running motion's), not a bad input.
+  // MC_Current_Direction is a valid direction (keep the running motion's), not
+  // a bad input.
   for (const fb::MC_Direction d : {fb::MC_Shortest_Way, fb::MC_Undefined_Direction}) {
     c.push_back({"MC_MoveVelocity.Direction = " + std::to_string(static_cast<int>(d)),
                  W::kMoveVelocity, [d](Blocks& b, fb::MC_Power&) { b.velo.Direction = d; },
@@ -284,7 +249,8 @@ std::vector<Case> cases() {
                  [](Blocks& b, double v) { b.stop.Deceleration = v; });
   dynamics_cases("MC_Stop", W::kStop, "Jerk", 0x422E, [](Blocks& b, double v) { b.stop.Jerk = v; });
 
-  // MC_Power: the program's own MC_Power gets a bad Override (written nowhere: 0x4238).
+  // MC_Power: the program's own MC_Power gets a bad Override (written nowhere:
+  // 0x4238).
   for (const double o : {kNaN, kInf, -kInf, -0.5, 100.5}) {
     c.push_back({"MC_Power.Override = " + std::to_string(o), W::kPower,
                  [o](Blocks&, fb::MC_Power& p) { p.Override = o; }, 0x4238});
@@ -306,7 +272,8 @@ TEST_CASE("the reference program moves to 2000 mm and ends Done without any erro
 }
 
 TEST_CASE(
-    "every bad input of every block gives Error with its own ErrorID and changes nothing "
+    "every bad input of every block gives Error with its own ErrorID and "
+    "changes nothing "
     "in the axis's state or motion",
     "[fb][kernel]") {
   const std::vector<Case> all = cases();
@@ -322,27 +289,7 @@ TEST_CASE(
       REQUIRE(ref.move_done_tick < 3'000);
       const Run bad = run(&c, inject, c.limit);
 
-      // The bad block: Error with the specific code by the call after the NC saw the command,
-      // and it stays while Execute stays high; never accepted.
-      REQUIRE(bad.bad.size() > 2);
-      for (std::size_t i = 1; i < bad.bad.size(); ++i) {
-        INFO("call " << i << " after the rising edge");
-        REQUIRE(bad.bad[i].error);
-        REQUIRE(bad.bad[i].error_id == c.code);
-        REQUIRE_FALSE(bad.bad[i].busy);
-      }
-
-      // Nothing else changed: the running move ends as without the bad command, and the
-      // NC→PLC image is the same at every cycle.
-      REQUIRE_FALSE(bad.move_aborted_or_failed);
-      REQUIRE(bad.move_done_tick == ref.move_done_tick);
-      REQUIRE(bad.trace.size() == ref.trace.size());
-      for (std::size_t t = 0; t < ref.trace.size(); ++t) {
-        if (!(bad.trace[t] == ref.trace[t])) {
-          FAIL_CHECK("NC image differs at tick " << t);
-          break;
-        }
-      }
+      twin::require_refused_without_effect(bad, ref, c.code);
     }
   }
 }

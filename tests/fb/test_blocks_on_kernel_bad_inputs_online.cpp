@@ -1,9 +1,11 @@
-// Every bad input of the blocks of issue 4 (MC_SetOverride, MC_NewPos, MC_NewPosAndVelo,
-// MC_MoveModulo, MC_MoveVelocity's MC_Current_Direction), sent to the real kernel while another
-// block's move runs (and at standstill after it), gives Error with its specific ErrorID — and
-// changes nothing: the NC→PLC image is bit-identical, cycle by cycle, to the same program run
-// without it, and the running move ends exactly as there (seed 000 §2.2–§2.4: VNew > 0 and at
-// most the max velocity, EPos inside the software limits, override 0 … 100 %).
+// Every bad input of the blocks of issue 4 (MC_SetOverride, MC_NewPos,
+// MC_NewPosAndVelo, MC_MoveModulo, MC_MoveVelocity's MC_Current_Direction),
+// sent to the real kernel while another block's move runs (and at standstill
+// after it), gives Error with its specific ErrorID — and changes nothing: the
+// NC→PLC image is bit-identical, cycle by cycle, to the same program run
+// without it, and the running move ends exactly as there (seed 000 §2.2–§2.4:
+// VNew > 0 and at most the max velocity, EPos inside the software limits,
+// override 0 … 100 %).
 #include <catch2/catch.hpp>
 
 #include <cstdint>
@@ -14,23 +16,22 @@
 
 #include "fb/fb.hpp"
 #include "nc_core/axis_config.hpp"
-#include "nc_core/cycle_driver.hpp"
-#include "nc_core/kernel.hpp"
+#include "twin_run.hpp"
 
 namespace {
+
+using twin::kMoveSpeed;
+using twin::kMoveTarget;
+using twin::Shown;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-constexpr double kCycle = 0.001;         // s
-constexpr uint64_t kRunTicks = 3'200;    // the move ends at about 2.1 s
 constexpr uint64_t kMidMove = 300;       // cruising toward 2000 mm
 constexpr uint64_t kStandstill = 3'000;  // after the move
 constexpr double kSwLimitMin = -500.0;   // mm
 constexpr double kSwLimitMax = 3'000.0;  // mm
 constexpr double kMaxVelocity = 2'200.0;
-constexpr double kMoveTarget = 2'000.0;  // mm
-constexpr double kMoveSpeed = 1'000.0;   // mm/s
 
 nc::AxisConfig axis_config() {
   nc::AxisConfig c;
@@ -76,11 +77,6 @@ struct Case {
   std::vector<uint64_t> inject = {kMidMove, kStandstill};
 };
 
-struct Shown {
-  bool busy = false, error = false;
-  uint32_t error_id = 0;
-};
-
 Shown call_bad(Which which, Blocks& b, plc::AXIS_REF& axis) {
   auto run = [&](auto& block) {
     block.Execute = true;
@@ -103,7 +99,8 @@ Shown call_bad(Which which, Blocks& b, plc::AXIS_REF& axis) {
   return {};
 }
 
-// The NC→PLC image of one cycle, every field the kernel publishes (bar the cycle counter).
+// The NC→PLC image of one cycle, every field the kernel publishes (bar the
+// cycle counter).
 struct Sample {
   uint32_t state_dword, error_code, axis_state, warning;
   double act_pos, modulo_act_pos, act_velo, pos_diff, set_pos, modulo_set_pos, set_velo, set_acc,
@@ -135,49 +132,17 @@ Sample sample(const plc::AXIS_REF& axis) {
                 axis.PlcToNc.ControlDWord};
 }
 
-struct Run {
-  std::vector<Sample> trace;
-  int64_t move_done_tick = -1;
-  bool move_aborted_or_failed = false;
-  std::vector<Shown> bad;  // the bad block's outputs from the injection on
-};
+using Run = twin::Run<Sample>;
 
-// The PLC program: enable the axis, move to 2000 mm at 1000 mm/s; at `inject` (if a case is
-// given) the bad block gets its rising edge (MC_SetOverride: its first enabled call), and is
-// then called with Execute / Enable held high.
+// The program of twin_run.hpp; at `inject` (if a case is given) the bad block
+// gets its rising edge (MC_SetOverride: its first enabled call), and is then
+// called with Execute / Enable held high.
 Run run(const Case* bad, uint64_t inject) {
-  nc::Kernel kernel(nc::KernelConfig{kCycle});
-  plc::AXIS_REF& axis = kernel.add_axis(axis_config());
-  nc::CycleDriver driver(kernel);
-
-  fb::MC_Power power;
-  fb::MC_MoveAbsolute move;
   Blocks blocks;
-  Run result;
-  result.trace.reserve(kRunTicks);
-
-  driver.add_task("plc", kCycle, [&] {
-    const uint64_t tick = driver.ticks();
-    power.Enable = true;
-    power.Enable_Positive = true;
-    power.Enable_Negative = true;
-    power(axis);
-
-    move.Position = kMoveTarget;
-    move.Velocity = kMoveSpeed;
-    move.Execute = tick >= 2;  // after the enables are in
-    move(axis);
-    if (move.Done && result.move_done_tick < 0) result.move_done_tick = static_cast<int64_t>(tick);
-    if (move.CommandAborted || move.Error) result.move_aborted_or_failed = true;
-
-    if (bad != nullptr && tick == inject) bad->spoil(blocks);
-    if (bad != nullptr && tick >= inject) result.bad.push_back(call_bad(bad->which, blocks, axis));
-  });
-  for (uint64_t i = 0; i < kRunTicks; ++i) {
-    driver.tick();
-    result.trace.push_back(sample(axis));
-  }
-  return result;
+  const twin::Injection injection{
+      inject, [&](fb::MC_Power&) { bad->spoil(blocks); },
+      [&](fb::MC_Power&, plc::AXIS_REF& axis) { return call_bad(bad->which, blocks, axis); }};
+  return twin::run_program(axis_config(), sample, bad != nullptr ? &injection : nullptr);
 }
 
 std::vector<Case> cases() {
@@ -188,13 +153,15 @@ std::vector<Case> cases() {
     double v;
   } non_finite[] = {{"NaN", kNaN}, {"+inf", kInf}, {"-inf", -kInf}};
 
-  // MC_SetOverride: VelFactor outside 0 … 1 or not finite — checked by the block, never written.
+  // MC_SetOverride: VelFactor outside 0 … 1 or not finite — checked by the
+  // block, never written.
   for (const double f : {kNaN, kInf, -kInf, -0.01, 1.01, 75.0}) {
     c.push_back({"MC_SetOverride.VelFactor = " + std::to_string(f), W::kSetOverride,
                  [f](Blocks& b) { b.set.VelFactor = f; }, 0x4238});
   }
 
-  // MC_NewPos: NewPos not finite (0x4F01), outside the software limits (0x4222).
+  // MC_NewPos: NewPos not finite (0x4F01), outside the software limits
+  // (0x4222).
   for (const auto& n : non_finite) {
     const double v = n.v;
     c.push_back({std::string("MC_NewPos.NewPos = ") + n.what, W::kNewPos,
@@ -207,8 +174,9 @@ std::vector<Case> cases() {
   // A valid NewPos with no positioning running: function not allowed.
   c.push_back({"MC_NewPos at standstill", W::kNewPos, [](Blocks&) {}, 0x424E, {kStandstill}});
 
-  // MC_NewPosAndVelo: EPos not finite (0x4F01); VNew or APos not finite (0x4F02); VNew <= 0
-  // (0x4231) or above the max velocity (0x4221); EPos outside the software limits (0x4222).
+  // MC_NewPosAndVelo: EPos not finite (0x4F01); VNew or APos not finite
+  // (0x4F02); VNew <= 0 (0x4231) or above the max velocity (0x4221); EPos
+  // outside the software limits (0x4222).
   for (const auto& n : non_finite) {
     const double v = n.v;
     c.push_back({std::string("MC_NewPosAndVelo.NewPos = ") + n.what, W::kNewPosAndVelo,
@@ -231,9 +199,10 @@ std::vector<Case> cases() {
   c.push_back(
       {"MC_NewPosAndVelo at standstill", W::kNewPosAndVelo, [](Blocks&) {}, 0x424E, {kStandstill}});
 
-  // MC_MoveModulo: Position not finite (0x4F01), absurdly many turns (0x4282), an end beyond
-  // the software limit (0x4222); Velocity and dynamics as every move; Direction and BufferMode
-  // checked by the block (0x4F07, 0x4F03); MC_Current_Direction at standstill (0x4F07).
+  // MC_MoveModulo: Position not finite (0x4F01), absurdly many turns (0x4282),
+  // an end beyond the software limit (0x4222); Velocity and dynamics as every
+  // move; Direction and BufferMode checked by the block (0x4F07, 0x4F03);
+  // MC_Current_Direction at standstill (0x4F07).
   for (const auto& n : non_finite) {
     const double v = n.v;
     c.push_back({std::string("MC_MoveModulo.Position = ") + n.what, W::kMoveModulo,
@@ -276,7 +245,8 @@ std::vector<Case> cases() {
                0x4F07,
                {kStandstill}});
 
-  // MC_MoveVelocity with MC_Current_Direction at standstill: there is no direction to keep.
+  // MC_MoveVelocity with MC_Current_Direction at standstill: there is no
+  // direction to keep.
   c.push_back({"MC_MoveVelocity.Direction = MC_Current_Direction at standstill",
                W::kMoveVelocity,
                [](Blocks&) {},
@@ -300,7 +270,8 @@ TEST_CASE("the reference program moves to 2000 mm and ends Done without any erro
 }
 
 TEST_CASE(
-    "every bad input of the blocks of issue 4 gives Error with its own ErrorID and changes "
+    "every bad input of the blocks of issue 4 gives Error with its own "
+    "ErrorID and changes "
     "nothing in the axis's state or motion",
     "[fb][kernel][online]") {
   const std::vector<Case> all = cases();
@@ -311,35 +282,19 @@ TEST_CASE(
       INFO(c.what << ", injected at tick " << inject);
       const Run bad = run(&c, inject);
 
-      // The bad block: Error with the specific code by the call after the NC saw the command,
-      // and it stays while Execute stays high; never accepted.
-      REQUIRE(bad.bad.size() > 2);
-      for (std::size_t i = 1; i < bad.bad.size(); ++i) {
-        INFO("call " << i << " after the rising edge");
-        REQUIRE(bad.bad[i].error);
-        REQUIRE(bad.bad[i].error_id == c.code);
-        REQUIRE_FALSE(bad.bad[i].busy);
-      }
-
-      REQUIRE_FALSE(bad.move_aborted_or_failed);
-      REQUIRE(bad.move_done_tick == ref.move_done_tick);
-      REQUIRE(bad.trace.size() == ref.trace.size());
-      for (std::size_t t = 0; t < ref.trace.size(); ++t) {
-        if (!(bad.trace[t] == ref.trace[t])) {
-          FAIL_CHECK("NC image differs at tick " << t);
-          break;
-        }
-      }
+      twin::require_refused_without_effect(bad, ref, c.code);
     }
   }
 }
 
 TEST_CASE(
-    "the valid inputs of the same blocks are accepted by the kernel (the bad cases differ "
+    "the valid inputs of the same blocks are accepted by the kernel (the "
+    "bad cases differ "
     "from them in one input only)",
     "[fb][kernel][online]") {
-  // Mid-move, each block with its valid inputs: no Error (MC_NewPos / MC_NewPosAndVelo Done,
-  // MC_MoveModulo / MC_MoveVelocity Busy, MC_SetOverride Enabled).
+  // Mid-move, each block with its valid inputs: no Error (MC_NewPos /
+  // MC_NewPosAndVelo Done, MC_MoveModulo / MC_MoveVelocity Busy, MC_SetOverride
+  // Enabled).
   for (const Which which : {Which::kSetOverride, Which::kNewPos, Which::kNewPosAndVelo,
                             Which::kMoveModulo, Which::kMoveVelocity}) {
     INFO("block " << static_cast<int>(which));

@@ -1,9 +1,11 @@
-// Every bad input of the superposition blocks (MC_MoveSuperImposed, MC_AbortSuperposition,
-// MC_ExtSetPointGenEnable, MC_ExtSetPointGenFeed), sent to the real kernel while another block's
-// move runs and again at standstill after it, gives its specific ErrorID and changes nothing: the
-// NC→PLC image is bit-identical, cycle by cycle, to the same program run without the bad block,
-// and the running move ends exactly as there (seed 000 §2.5 "start parameters": L, VP, VK, AK+,
-// AK- > 0 and D ≠ 0; §2.6 start types absolute (1) and relative (2); feed directions -1, 0, +1).
+// Every bad input of the superposition blocks (MC_MoveSuperImposed,
+// MC_AbortSuperposition, MC_ExtSetPointGenEnable, MC_ExtSetPointGenFeed), sent
+// to the real kernel while another block's move runs and again at standstill
+// after it, gives its specific ErrorID and changes nothing: the NC→PLC image is
+// bit-identical, cycle by cycle, to the same program run without the bad block,
+// and the running move ends exactly as there (seed 000 §2.5 "start parameters":
+// L, VP, VK, AK+, AK- > 0 and D ≠ 0; §2.6 start types absolute (1) and relative
+// (2); feed directions -1, 0, +1).
 #include <catch2/catch.hpp>
 
 #include <cstdint>
@@ -14,18 +16,16 @@
 
 #include "fb/fb.hpp"
 #include "nc_core/axis_config.hpp"
-#include "nc_core/cycle_driver.hpp"
-#include "nc_core/kernel.hpp"
+#include "twin_run.hpp"
 
 namespace {
 
+using twin::kMoveSpeed;
+using twin::kMoveTarget;
+using twin::Shown;
+
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-constexpr double kCycle = 0.001;         // s
-constexpr uint64_t kRunTicks = 3'200;    // the move ends at about 2.1 s
-constexpr double kMoveTarget = 2'000.0;  // mm
-constexpr double kMoveSpeed = 1'000.0;   // mm/s
 
 // The superposition blocks, each with valid inputs; a case spoils one of them.
 struct Blocks {
@@ -55,11 +55,6 @@ struct Case {
   uint32_t code;
 };
 
-struct Shown {
-  bool busy = false, error = false;
-  uint32_t error_id = 0;
-};
-
 Shown call_bad(Which which, Blocks& b, plc::AXIS_REF& axis) {
   auto run = [&](auto& block) {
     block.Execute = true;
@@ -82,7 +77,8 @@ Shown call_bad(Which which, Blocks& b, plc::AXIS_REF& axis) {
   return {};
 }
 
-// The NC→PLC image of one cycle (bar the cycle counter) and the PLC→NC words it reads.
+// The NC→PLC image of one cycle (bar the cycle counter) and the PLC→NC words it
+// reads.
 struct Sample {
   uint32_t state_dword, error_code, axis_state, warning;
   double act_pos, act_velo, pos_diff, set_pos, set_velo, set_acc, set_jerk, target_pos;
@@ -119,46 +115,19 @@ Sample sample(const plc::AXIS_REF& axis) {
                 p.ExtSetDirection};
 }
 
-struct Run {
-  std::vector<Sample> trace;
-  int64_t move_done_tick = -1;
-  bool move_aborted_or_failed = false;
-  std::vector<Shown> bad;  // the bad block's outputs from the injection on
-};
+using Run = twin::Run<Sample>;
 
-// Enable the axis, move to 2000 mm; at `inject` the bad block gets its rising edge (or the feed
-// its first call) and is then called every cycle with Execute held high.
+// The program of twin_run.hpp; at `inject` the bad block gets its rising edge
+// (or the feed its first call) and is then called every cycle with Execute held
+// high.
 Run run(const Case* bad, uint64_t inject) {
-  nc::Kernel kernel(nc::KernelConfig{kCycle});
   nc::AxisConfig config;
   config.name = "X";
-  plc::AXIS_REF& axis = kernel.add_axis(config);
-  nc::CycleDriver driver(kernel);
-
-  fb::MC_Power power;
-  fb::MC_MoveAbsolute move;
   Blocks blocks;
-  Run result;
-  result.trace.reserve(kRunTicks);
-
-  driver.add_task("plc", kCycle, [&] {
-    const uint64_t tick = driver.ticks();
-    power.Enable = power.Enable_Positive = power.Enable_Negative = true;
-    power(axis);
-    move.Position = kMoveTarget;
-    move.Velocity = kMoveSpeed;
-    move.Execute = tick >= 2;
-    move(axis);
-    if (move.Done && result.move_done_tick < 0) result.move_done_tick = static_cast<int64_t>(tick);
-    if (move.CommandAborted || move.Error) result.move_aborted_or_failed = true;
-    if (bad != nullptr && tick == inject) bad->spoil(blocks);
-    if (bad != nullptr && tick >= inject) result.bad.push_back(call_bad(bad->which, blocks, axis));
-  });
-  for (uint64_t i = 0; i < kRunTicks; ++i) {
-    driver.tick();
-    result.trace.push_back(sample(axis));
-  }
-  return result;
+  const twin::Injection injection{
+      inject, [&](fb::MC_Power&) { bad->spoil(blocks); },
+      [&](fb::MC_Power&, plc::AXIS_REF& axis) { return call_bad(bad->which, blocks, axis); }};
+  return twin::run_program(config, sample, bad != nullptr ? &injection : nullptr);
 }
 
 std::vector<Case> cases() {
@@ -202,8 +171,8 @@ std::vector<Case> cases() {
   // MC_AbortSuperposition with no compensation running.
   c.push_back({"MC_AbortSuperposition without a compensation", W::kAbortSuperposition,
                [](Blocks&) {}, 0x4246});
-  // MC_ExtSetPointGenEnable: a PositionType outside E_PositionType (the block's check), a
-  // target that is not finite (the NC's).
+  // MC_ExtSetPointGenEnable: a PositionType outside E_PositionType (the block's
+  // check), a target that is not finite (the NC's).
   for (const int type : {0, 3, -1}) {
     c.push_back(
         {"MC_ExtSetPointGenEnable.PositionType = " + std::to_string(type), W::kExtSetPointGenEnable,
@@ -228,10 +197,13 @@ std::vector<Case> cases() {
 
 }  // namespace
 
-TEST_CASE("a valid compensation on the same program is accepted and moves the end by D",
-          "[fb][kernel][superimposed]") {
-  // The control case: the program and the blocks' default inputs do reach the NC, so an
-  // identical image in the bad cases means "refused", not "never sent".
+TEST_CASE(
+    "a valid compensation on the same program is accepted and moves the "
+    "end by D",
+    "[fb][kernel][superimposed]") {
+  // The control case: the program and the blocks' default inputs do reach the
+  // NC, so an identical image in the bad cases means "refused", not "never
+  // sent".
   const Case valid{"valid", Which::kMoveSuperImposed, [](Blocks&) {}, 0};
   const Run ref = run(nullptr, 0);
   const Run ok = run(&valid, 400);
@@ -245,7 +217,8 @@ TEST_CASE("a valid compensation on the same program is accepted and moves the en
 }
 
 TEST_CASE(
-    "every bad input of the superposition blocks gives its own ErrorID and changes nothing "
+    "every bad input of the superposition blocks gives its own ErrorID "
+    "and changes nothing "
     "in the axis's state or motion",
     "[fb][kernel][superimposed]") {
   const std::vector<Case> all = cases();
@@ -259,22 +232,7 @@ TEST_CASE(
     for (const Case& c : all) {
       INFO(c.what << ", injected at tick " << inject);
       const Run bad = run(&c, inject);
-      REQUIRE(bad.bad.size() > 2);
-      for (std::size_t i = 1; i < bad.bad.size(); ++i) {
-        INFO("call " << i << " after the rising edge");
-        REQUIRE(bad.bad[i].error);
-        REQUIRE(bad.bad[i].error_id == c.code);
-        REQUIRE_FALSE(bad.bad[i].busy);
-      }
-      REQUIRE_FALSE(bad.move_aborted_or_failed);
-      REQUIRE(bad.move_done_tick == ref.move_done_tick);
-      REQUIRE(bad.trace.size() == ref.trace.size());
-      for (std::size_t t = 0; t < ref.trace.size(); ++t) {
-        if (!(bad.trace[t] == ref.trace[t])) {
-          FAIL_CHECK("NC image differs at tick " << t);
-          break;
-        }
-      }
+      twin::require_refused_without_effect(bad, ref, c.code);
     }
   }
 }
