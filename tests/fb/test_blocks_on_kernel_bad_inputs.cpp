@@ -1,9 +1,8 @@
-// Every bad input of every block, sent to the real kernel while another block's
-// move runs (and again at standstill after it), gives Error with its specific
-// ErrorID — and changes nothing: the NC→PLC image is bit-identical, cycle by
-// cycle, to the same program run without the bad command, and the running move
-// ends exactly as it does there (brief: "a refused command does not change the
-// axis"; SPEC A4; seed 000 §2.1 table 2 and notes 4, 5).
+// Every bad input of every block, sent to the real kernel while another block's move runs (and
+// again at standstill after it), gives Error with its specific ErrorID — and changes nothing:
+// the NC→PLC image is bit-identical, cycle by cycle, to the same program run without the bad
+// command, and the running move ends exactly as it does there (brief: "a refused command does
+// not change the axis"; SPEC A4; seed 000 §2.1 table 2 and notes 4, 5).
 #include <catch2/catch.hpp>
 
 #include <cstdint>
@@ -20,6 +19,7 @@ namespace {
 
 using twin::kMoveSpeed;
 using twin::kMoveTarget;
+using twin::Run;
 using twin::Shown;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -28,8 +28,8 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kSwLimitMin = -500.0;   // mm
 constexpr double kSwLimitMax = 3'000.0;  // mm
 
-// Which of the two velocity limits is the lower one: a velocity between them is
-// above exactly one of them.
+// Which of the two velocity limits is the lower one: a velocity between them is above exactly
+// one of them.
 enum class Limit { kRefBelowMax, kMaxBelowRef };
 
 nc::AxisConfig axis_config(Limit limit) {
@@ -44,8 +44,7 @@ nc::AxisConfig axis_config(Limit limit) {
   return c;
 }
 
-// Every block that can carry a bad input, each with valid inputs; a case spoils
-// one of them.
+// Every block that can carry a bad input, each with valid inputs; a case spoils one of them.
 struct Blocks {
   Blocks() {
     abs.Position = 1'000.0;
@@ -73,11 +72,7 @@ struct Case {
 };
 
 Shown call_bad(Which which, Blocks& b, fb::MC_Power& power, plc::AXIS_REF& axis, bool execute) {
-  auto run = [&](auto& block) {
-    block.Execute = execute;
-    block(axis);
-    return Shown{block.Busy, block.Error, block.ErrorID};
-  };
+  auto run = [&](auto& block) { return twin::call_execute(block, axis, execute); };
   switch (which) {
     case Which::kMoveAbsolute:
       return run(b.abs);
@@ -95,55 +90,22 @@ Shown call_bad(Which which, Blocks& b, fb::MC_Power& power, plc::AXIS_REF& axis,
   return {};
 }
 
-// The NC→PLC image of one cycle, every field the kernel publishes (bar the
-// cycle counter).
-struct Sample {
-  uint32_t state_dword, error_code, axis_state, warning;
-  double act_pos, act_velo, pos_diff, set_pos, set_velo, set_acc, set_jerk, target_pos;
-  uint16_t cmd_no, cmd_state;
-  uint32_t override_raw, control_dword;
-  bool operator==(const Sample&) const = default;
-};
-
-Sample sample(const plc::AXIS_REF& axis) {
-  const plc::NCTOPLC_AXIS_REF& n = axis.NcToPlc;
-  return Sample{n.StateDWord,
-                n.ErrorCode,
-                n.AxisState,
-                n.Warning,
-                n.ActPos,
-                n.ActVelo,
-                n.PosDiff,
-                n.SetPos,
-                n.SetVelo,
-                n.SetAcc,
-                n.SetJerk,
-                n.TargetPos,
-                n.CmdNo,
-                n.CmdState,
-                axis.PlcToNc.Override,
-                axis.PlcToNc.ControlDWord};
-}
-
-using Run = twin::Run<Sample>;
-
-// The program of twin_run.hpp; at `inject` (if a case is given) the bad block
-// gets its rising edge, and is then called with Execute held high.
+// The program of twin_run.hpp; at `inject` (if a case is given) the bad block gets its rising
+// edge, and is then called with Execute held high.
 Run run(const Case* bad, uint64_t inject, Limit limit) {
   Blocks blocks;
   const twin::Injection injection{inject, [&](fb::MC_Power& power) { bad->spoil(blocks, power); },
                                   [&](fb::MC_Power& power, plc::AXIS_REF& axis) {
                                     return call_bad(bad->which, blocks, power, axis, true);
                                   }};
-  return twin::run_program(axis_config(limit), sample, bad != nullptr ? &injection : nullptr);
+  return twin::run_program(axis_config(limit), bad != nullptr ? &injection : nullptr);
 }
 
 std::vector<Case> cases() {
   std::vector<Case> c;
   using W = Which;
-  // A bad value for a velocity-like input: NaN and ±inf (0x4F02), 0 and
-  // negative (0x4231), above the reference (and max) velocity and above the max
-  // velocity only (0x4221).
+  // A bad value for a velocity-like input: NaN and ±inf (0x4F02), 0 and negative (0x4231),
+  // above the reference (and max) velocity and above the max velocity only (0x4221).
   auto velocity_cases = [&](const std::string& block, W which,
                             std::function<void(Blocks&, double)> set) {
     const struct {
@@ -165,8 +127,8 @@ std::vector<Case> cases() {
                    [set, v](Blocks& b, fb::MC_Power&) { set(b, v); }, r.code, r.limit});
     }
   };
-  // Acceleration, Deceleration, Jerk: NaN and ±inf (0x4F02), negative (0x422F /
-  // 0x4230 / 0x422E); 0 means the axis default and is valid.
+  // Acceleration, Deceleration, Jerk: NaN and ±inf (0x4F02), negative (0x422F / 0x4230 /
+  // 0x422E); 0 means the axis default and is valid.
   auto dynamics_cases = [&](const std::string& block, W which, const std::string& input,
                             uint32_t negative_code, std::function<void(Blocks&, double)> set) {
     const struct {
@@ -229,8 +191,7 @@ std::vector<Case> cases() {
                  [](Blocks& b, double v) { b.velo.Velocity = v; });
   move_dynamics("MC_MoveVelocity", W::kMoveVelocity,
                 [](Blocks& b) -> fb::MC_MoveVelocity& { return b.velo; });
-  // MC_Current_Direction is a valid direction (keep the running motion's), not
-  // a bad input.
+  // MC_Current_Direction is a valid direction (keep the running motion's), not a bad input.
   for (const fb::MC_Direction d : {fb::MC_Shortest_Way, fb::MC_Undefined_Direction}) {
     c.push_back({"MC_MoveVelocity.Direction = " + std::to_string(static_cast<int>(d)),
                  W::kMoveVelocity, [d](Blocks& b, fb::MC_Power&) { b.velo.Direction = d; },
@@ -249,8 +210,7 @@ std::vector<Case> cases() {
                  [](Blocks& b, double v) { b.stop.Deceleration = v; });
   dynamics_cases("MC_Stop", W::kStop, "Jerk", 0x422E, [](Blocks& b, double v) { b.stop.Jerk = v; });
 
-  // MC_Power: the program's own MC_Power gets a bad Override (written nowhere:
-  // 0x4238).
+  // MC_Power: the program's own MC_Power gets a bad Override (written nowhere: 0x4238).
   for (const double o : {kNaN, kInf, -kInf, -0.5, 100.5}) {
     c.push_back({"MC_Power.Override = " + std::to_string(o), W::kPower,
                  [o](Blocks&, fb::MC_Power& p) { p.Override = o; }, 0x4238});
@@ -272,8 +232,7 @@ TEST_CASE("the reference program moves to 2000 mm and ends Done without any erro
 }
 
 TEST_CASE(
-    "every bad input of every block gives Error with its own ErrorID and "
-    "changes nothing "
+    "every bad input of every block gives Error with its own ErrorID and changes nothing "
     "in the axis's state or motion",
     "[fb][kernel]") {
   const std::vector<Case> all = cases();

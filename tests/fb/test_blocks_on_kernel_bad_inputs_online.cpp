@@ -1,11 +1,9 @@
-// Every bad input of the blocks of issue 4 (MC_SetOverride, MC_NewPos,
-// MC_NewPosAndVelo, MC_MoveModulo, MC_MoveVelocity's MC_Current_Direction),
-// sent to the real kernel while another block's move runs (and at standstill
-// after it), gives Error with its specific ErrorID — and changes nothing: the
-// NC→PLC image is bit-identical, cycle by cycle, to the same program run
-// without it, and the running move ends exactly as there (seed 000 §2.2–§2.4:
-// VNew > 0 and at most the max velocity, EPos inside the software limits,
-// override 0 … 100 %).
+// Every bad input of the blocks of issue 4 (MC_SetOverride, MC_NewPos, MC_NewPosAndVelo,
+// MC_MoveModulo, MC_MoveVelocity's MC_Current_Direction), sent to the real kernel while another
+// block's move runs (and at standstill after it), gives Error with its specific ErrorID — and
+// changes nothing: the NC→PLC image is bit-identical, cycle by cycle, to the same program run
+// without it, and the running move ends exactly as there (seed 000 §2.2–§2.4: VNew > 0 and at
+// most the max velocity, EPos inside the software limits, override 0 … 100 %).
 #include <catch2/catch.hpp>
 
 #include <cstdint>
@@ -22,6 +20,7 @@ namespace {
 
 using twin::kMoveSpeed;
 using twin::kMoveTarget;
+using twin::Run;
 using twin::Shown;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -78,11 +77,7 @@ struct Case {
 };
 
 Shown call_bad(Which which, Blocks& b, plc::AXIS_REF& axis) {
-  auto run = [&](auto& block) {
-    block.Execute = true;
-    block(axis);
-    return Shown{block.Busy, block.Error, block.ErrorID};
-  };
+  auto run = [&](auto& block) { return twin::call_execute(block, axis); };
   switch (which) {
     case Which::kSetOverride:
       b.set(axis);
@@ -99,50 +94,15 @@ Shown call_bad(Which which, Blocks& b, plc::AXIS_REF& axis) {
   return {};
 }
 
-// The NC→PLC image of one cycle, every field the kernel publishes (bar the
-// cycle counter).
-struct Sample {
-  uint32_t state_dword, error_code, axis_state, warning;
-  double act_pos, modulo_act_pos, act_velo, pos_diff, set_pos, modulo_set_pos, set_velo, set_acc,
-      set_jerk, target_pos;
-  uint16_t cmd_no, cmd_state;
-  uint32_t override_raw, control_dword;
-  bool operator==(const Sample&) const = default;
-};
-
-Sample sample(const plc::AXIS_REF& axis) {
-  const plc::NCTOPLC_AXIS_REF& n = axis.NcToPlc;
-  return Sample{n.StateDWord,
-                n.ErrorCode,
-                n.AxisState,
-                n.Warning,
-                n.ActPos,
-                n.ModuloActPos,
-                n.ActVelo,
-                n.PosDiff,
-                n.SetPos,
-                n.ModuloSetPos,
-                n.SetVelo,
-                n.SetAcc,
-                n.SetJerk,
-                n.TargetPos,
-                n.CmdNo,
-                n.CmdState,
-                axis.PlcToNc.Override,
-                axis.PlcToNc.ControlDWord};
-}
-
-using Run = twin::Run<Sample>;
-
-// The program of twin_run.hpp; at `inject` (if a case is given) the bad block
-// gets its rising edge (MC_SetOverride: its first enabled call), and is then
-// called with Execute / Enable held high.
+// The program of twin_run.hpp; at `inject` (if a case is given) the bad block gets its rising
+// edge (MC_SetOverride: its first enabled call), and is then called with Execute / Enable held
+// high.
 Run run(const Case* bad, uint64_t inject) {
   Blocks blocks;
   const twin::Injection injection{
       inject, [&](fb::MC_Power&) { bad->spoil(blocks); },
       [&](fb::MC_Power&, plc::AXIS_REF& axis) { return call_bad(bad->which, blocks, axis); }};
-  return twin::run_program(axis_config(), sample, bad != nullptr ? &injection : nullptr);
+  return twin::run_program(axis_config(), bad != nullptr ? &injection : nullptr);
 }
 
 std::vector<Case> cases() {
@@ -153,15 +113,13 @@ std::vector<Case> cases() {
     double v;
   } non_finite[] = {{"NaN", kNaN}, {"+inf", kInf}, {"-inf", -kInf}};
 
-  // MC_SetOverride: VelFactor outside 0 … 1 or not finite — checked by the
-  // block, never written.
+  // MC_SetOverride: VelFactor outside 0 … 1 or not finite — checked by the block, never written.
   for (const double f : {kNaN, kInf, -kInf, -0.01, 1.01, 75.0}) {
     c.push_back({"MC_SetOverride.VelFactor = " + std::to_string(f), W::kSetOverride,
                  [f](Blocks& b) { b.set.VelFactor = f; }, 0x4238});
   }
 
-  // MC_NewPos: NewPos not finite (0x4F01), outside the software limits
-  // (0x4222).
+  // MC_NewPos: NewPos not finite (0x4F01), outside the software limits (0x4222).
   for (const auto& n : non_finite) {
     const double v = n.v;
     c.push_back({std::string("MC_NewPos.NewPos = ") + n.what, W::kNewPos,
@@ -174,9 +132,8 @@ std::vector<Case> cases() {
   // A valid NewPos with no positioning running: function not allowed.
   c.push_back({"MC_NewPos at standstill", W::kNewPos, [](Blocks&) {}, 0x424E, {kStandstill}});
 
-  // MC_NewPosAndVelo: EPos not finite (0x4F01); VNew or APos not finite
-  // (0x4F02); VNew <= 0 (0x4231) or above the max velocity (0x4221); EPos
-  // outside the software limits (0x4222).
+  // MC_NewPosAndVelo: EPos not finite (0x4F01); VNew or APos not finite (0x4F02); VNew <= 0
+  // (0x4231) or above the max velocity (0x4221); EPos outside the software limits (0x4222).
   for (const auto& n : non_finite) {
     const double v = n.v;
     c.push_back({std::string("MC_NewPosAndVelo.NewPos = ") + n.what, W::kNewPosAndVelo,
@@ -199,10 +156,9 @@ std::vector<Case> cases() {
   c.push_back(
       {"MC_NewPosAndVelo at standstill", W::kNewPosAndVelo, [](Blocks&) {}, 0x424E, {kStandstill}});
 
-  // MC_MoveModulo: Position not finite (0x4F01), absurdly many turns (0x4282),
-  // an end beyond the software limit (0x4222); Velocity and dynamics as every
-  // move; Direction and BufferMode checked by the block (0x4F07, 0x4F03);
-  // MC_Current_Direction at standstill (0x4F07).
+  // MC_MoveModulo: Position not finite (0x4F01), absurdly many turns (0x4282), an end beyond
+  // the software limit (0x4222); Velocity and dynamics as every move; Direction and BufferMode
+  // checked by the block (0x4F07, 0x4F03); MC_Current_Direction at standstill (0x4F07).
   for (const auto& n : non_finite) {
     const double v = n.v;
     c.push_back({std::string("MC_MoveModulo.Position = ") + n.what, W::kMoveModulo,
@@ -245,8 +201,7 @@ std::vector<Case> cases() {
                0x4F07,
                {kStandstill}});
 
-  // MC_MoveVelocity with MC_Current_Direction at standstill: there is no
-  // direction to keep.
+  // MC_MoveVelocity with MC_Current_Direction at standstill: there is no direction to keep.
   c.push_back({"MC_MoveVelocity.Direction = MC_Current_Direction at standstill",
                W::kMoveVelocity,
                [](Blocks&) {},
@@ -270,8 +225,7 @@ TEST_CASE("the reference program moves to 2000 mm and ends Done without any erro
 }
 
 TEST_CASE(
-    "every bad input of the blocks of issue 4 gives Error with its own "
-    "ErrorID and changes "
+    "every bad input of the blocks of issue 4 gives Error with its own ErrorID and changes "
     "nothing in the axis's state or motion",
     "[fb][kernel][online]") {
   const std::vector<Case> all = cases();
@@ -288,13 +242,11 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "the valid inputs of the same blocks are accepted by the kernel (the "
-    "bad cases differ "
+    "the valid inputs of the same blocks are accepted by the kernel (the bad cases differ "
     "from them in one input only)",
     "[fb][kernel][online]") {
-  // Mid-move, each block with its valid inputs: no Error (MC_NewPos /
-  // MC_NewPosAndVelo Done, MC_MoveModulo / MC_MoveVelocity Busy, MC_SetOverride
-  // Enabled).
+  // Mid-move, each block with its valid inputs: no Error (MC_NewPos / MC_NewPosAndVelo Done,
+  // MC_MoveModulo / MC_MoveVelocity Busy, MC_SetOverride Enabled).
   for (const Which which : {Which::kSetOverride, Which::kNewPos, Which::kNewPosAndVelo,
                             Which::kMoveModulo, Which::kMoveVelocity}) {
     INFO("block " << static_cast<int>(which));

@@ -1,11 +1,9 @@
-// Every bad input of the superposition blocks (MC_MoveSuperImposed,
-// MC_AbortSuperposition, MC_ExtSetPointGenEnable, MC_ExtSetPointGenFeed), sent
-// to the real kernel while another block's move runs and again at standstill
-// after it, gives its specific ErrorID and changes nothing: the NC→PLC image is
-// bit-identical, cycle by cycle, to the same program run without the bad block,
-// and the running move ends exactly as there (seed 000 §2.5 "start parameters":
-// L, VP, VK, AK+, AK- > 0 and D ≠ 0; §2.6 start types absolute (1) and relative
-// (2); feed directions -1, 0, +1).
+// Every bad input of the superposition blocks (MC_MoveSuperImposed, MC_AbortSuperposition,
+// MC_ExtSetPointGenEnable, MC_ExtSetPointGenFeed), sent to the real kernel while another block's
+// move runs and again at standstill after it, gives its specific ErrorID and changes nothing: the
+// NC→PLC image is bit-identical, cycle by cycle, to the same program run without the bad block,
+// and the running move ends exactly as there (seed 000 §2.5 "start parameters": L, VP, VK, AK+,
+// AK- > 0 and D ≠ 0; §2.6 start types absolute (1) and relative (2); feed directions -1, 0, +1).
 #include <catch2/catch.hpp>
 
 #include <cstdint>
@@ -22,6 +20,7 @@ namespace {
 
 using twin::kMoveSpeed;
 using twin::kMoveTarget;
+using twin::Run;
 using twin::Shown;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -56,11 +55,7 @@ struct Case {
 };
 
 Shown call_bad(Which which, Blocks& b, plc::AXIS_REF& axis) {
-  auto run = [&](auto& block) {
-    block.Execute = true;
-    block(axis);
-    return Shown{block.Busy, block.Error, block.ErrorID};
-  };
+  auto run = [&](auto& block) { return twin::call_execute(block, axis); };
   switch (which) {
     case Which::kMoveSuperImposed:
       return run(b.comp);
@@ -77,49 +72,8 @@ Shown call_bad(Which which, Blocks& b, plc::AXIS_REF& axis) {
   return {};
 }
 
-// The NC→PLC image of one cycle (bar the cycle counter) and the PLC→NC words it
-// reads.
-struct Sample {
-  uint32_t state_dword, error_code, axis_state, warning;
-  double act_pos, act_velo, pos_diff, set_pos, set_velo, set_acc, set_jerk, target_pos;
-  double compensation_distance, compensation_length, compensation_velocity_diff;
-  uint16_t cmd_no, cmd_state;
-  double ext_pos, ext_velo, ext_acc;
-  int32_t ext_direction;
-  bool operator==(const Sample&) const = default;
-};
-
-Sample sample(const plc::AXIS_REF& axis) {
-  const plc::NCTOPLC_AXIS_REF& n = axis.NcToPlc;
-  const plc::PLCTONC_AXIS_REF& p = axis.PlcToNc;
-  return Sample{n.StateDWord,
-                n.ErrorCode,
-                n.AxisState,
-                n.Warning,
-                n.ActPos,
-                n.ActVelo,
-                n.PosDiff,
-                n.SetPos,
-                n.SetVelo,
-                n.SetAcc,
-                n.SetJerk,
-                n.TargetPos,
-                n.CompensationDistance,
-                n.CompensationLength,
-                n.CompensationVelocityDiff,
-                n.CmdNo,
-                n.CmdState,
-                p.ExtSetPos,
-                p.ExtSetVelo,
-                p.ExtSetAcc,
-                p.ExtSetDirection};
-}
-
-using Run = twin::Run<Sample>;
-
-// The program of twin_run.hpp; at `inject` the bad block gets its rising edge
-// (or the feed its first call) and is then called every cycle with Execute held
-// high.
+// The program of twin_run.hpp; at `inject` the bad block gets its rising edge (or the feed its
+// first call) and is then called every cycle with Execute held high.
 Run run(const Case* bad, uint64_t inject) {
   nc::AxisConfig config;
   config.name = "X";
@@ -127,7 +81,7 @@ Run run(const Case* bad, uint64_t inject) {
   const twin::Injection injection{
       inject, [&](fb::MC_Power&) { bad->spoil(blocks); },
       [&](fb::MC_Power&, plc::AXIS_REF& axis) { return call_bad(bad->which, blocks, axis); }};
-  return twin::run_program(config, sample, bad != nullptr ? &injection : nullptr);
+  return twin::run_program(config, bad != nullptr ? &injection : nullptr);
 }
 
 std::vector<Case> cases() {
@@ -171,8 +125,8 @@ std::vector<Case> cases() {
   // MC_AbortSuperposition with no compensation running.
   c.push_back({"MC_AbortSuperposition without a compensation", W::kAbortSuperposition,
                [](Blocks&) {}, 0x4246});
-  // MC_ExtSetPointGenEnable: a PositionType outside E_PositionType (the block's
-  // check), a target that is not finite (the NC's).
+  // MC_ExtSetPointGenEnable: a PositionType outside E_PositionType (the block's check), a
+  // target that is not finite (the NC's).
   for (const int type : {0, 3, -1}) {
     c.push_back(
         {"MC_ExtSetPointGenEnable.PositionType = " + std::to_string(type), W::kExtSetPointGenEnable,
@@ -197,13 +151,10 @@ std::vector<Case> cases() {
 
 }  // namespace
 
-TEST_CASE(
-    "a valid compensation on the same program is accepted and moves the "
-    "end by D",
-    "[fb][kernel][superimposed]") {
-  // The control case: the program and the blocks' default inputs do reach the
-  // NC, so an identical image in the bad cases means "refused", not "never
-  // sent".
+TEST_CASE("a valid compensation on the same program is accepted and moves the end by D",
+          "[fb][kernel][superimposed]") {
+  // The control case: the program and the blocks' default inputs do reach the NC, so an
+  // identical image in the bad cases means "refused", not "never sent".
   const Case valid{"valid", Which::kMoveSuperImposed, [](Blocks&) {}, 0};
   const Run ref = run(nullptr, 0);
   const Run ok = run(&valid, 400);
@@ -217,8 +168,7 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "every bad input of the superposition blocks gives its own ErrorID "
-    "and changes nothing "
+    "every bad input of the superposition blocks gives its own ErrorID and changes nothing "
     "in the axis's state or motion",
     "[fb][kernel][superimposed]") {
   const std::vector<Case> all = cases();

@@ -1,18 +1,15 @@
-// No allocation in the superpositions' cycle path (brief: real-time
-// discipline): a counting global operator new over a positioning with a
-// compensation, its compensation stop, a stop during a second compensation, and
-// an external setpoint run (absolute and relative, enable, feed, disable)
-// counts 0 — commands posted, answered and packets taken inside the counted
+// No allocation in the superpositions' cycle path (brief: real-time discipline): a counting
+// global operator new over a positioning with a compensation, its compensation stop, a stop
+// during a second compensation, and an external setpoint run (absolute and relative, enable,
+// feed, disable) counts 0 — commands posted, answered and packets taken inside the counted
 // region. Runs only in the plain build (the sanitizers own the allocator).
 #include <catch2/catch.hpp>
 
 #include "counting_allocator.hpp"
 #include "kernel_harness.hpp"
 
-TEST_CASE(
-    "compensation, compensation stop, stop and external setpoints "
-    "allocate nothing",
-    "[no_allocation][compensation][ext_setpoint]") {
+TEST_CASE("compensation, compensation stop, stop and external setpoints allocate nothing",
+          "[no_allocation][compensation][ext_setpoint]") {
   kt::Harness h;
   kt::Harness lagging = [] {
     nc::AxisConfig c = kt::seed_axis("lag");

@@ -1,7 +1,6 @@
-// No allocation in the cycle path (brief, ARCHITECTURE "One tick"): a counting
-// global operator new over 10 000 NC cycles of 8 moving axes, with their
-// MC_Power and MC_MoveAbsolute blocks called every cycle, counts 0. Runs only
-// in the plain build (the sanitizers own the allocator).
+// No allocation in the cycle path (brief, ARCHITECTURE "One tick"): a counting global operator
+// new over 10 000 NC cycles of 8 moving axes, with their MC_Power and MC_MoveAbsolute blocks
+// called every cycle, counts 0. Runs only in the plain build (the sanitizers own the allocator).
 #include <catch2/catch.hpp>
 
 #include <array>
@@ -12,8 +11,7 @@
 #include "kernel_harness.hpp"
 
 TEST_CASE(
-    "10000 cycles of 8 moving axes with their MC_Power and "
-    "MC_MoveAbsolute blocks "
+    "10000 cycles of 8 moving axes with their MC_Power and MC_MoveAbsolute blocks "
     "allocate nothing",
     "[no_allocation]") {
   constexpr int kAxes = 8;

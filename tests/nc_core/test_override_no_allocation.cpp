@@ -1,18 +1,15 @@
-// No allocation in the online functions (brief: real-time discipline in the
-// cycle path): a counting global operator new over 20 000 NC cycles in which
-// the override changes, new end positions and new velocities (all six cases'
-// kinds, pending activations), modulo starts, velocity moves, halts and stops
-// act on a moving axis, counts 0. Runs only in the plain build (the sanitizers
-// own the allocator).
+// No allocation in the online functions (brief: real-time discipline in the cycle path): a
+// counting global operator new over 20 000 NC cycles in which the override changes, new end
+// positions and new velocities (all six cases' kinds, pending activations), modulo starts,
+// velocity moves, halts and stops act on a moving axis, counts 0. Runs only in the plain build
+// (the sanitizers own the allocator).
 #include <catch2/catch.hpp>
 
 #include "counting_allocator.hpp"
 #include "kernel_harness.hpp"
 
-TEST_CASE(
-    "override, new end positions, new velocities, modulo starts and "
-    "stops allocate nothing",
-    "[no_allocation][override][new_pos][modulo]") {
+TEST_CASE("override, new end positions, new velocities, modulo starts and stops allocate nothing",
+          "[no_allocation][override][new_pos][modulo]") {
   kt::Harness h;
   plc::AXIS_REF& x = *h.x;
   ca::g_counting = true;

@@ -1,6 +1,5 @@
-// Scope::record is a cycle function: with the storage reserved at set-up it
-// never allocates. (Skipped in the sanitizer build: a counting operator new
-// does not mix with its allocator.)
+// Scope::record is a cycle function: with the storage reserved at set-up it never allocates.
+// (Skipped in the sanitizer build: a counting operator new does not mix with its allocator.)
 #include <string>
 
 #include <catch2/catch.hpp>

@@ -2,9 +2,8 @@
 // change the axis"; SPEC A4): one PLC program — MC_Power enables the axis, MC_MoveAbsolute moves
 // it to 2000 mm at 1000 mm/s — run on the real kernel twice, once plain and once with a bad block
 // injected at one tick; the bad block must show Error with its specific ErrorID on every call
-// after the NC saw its command, and the NC→PLC image (the test's own Sample of it) must be the
-// same at every tick as in the plain run, the move ending as there. Each test file keeps its
-// blocks, its Sample and its list of cases.
+// after the NC saw its command, and the image (Sample) must be the same at every tick as in the
+// plain run, the move ending as there. Each test file keeps its blocks and its list of cases.
 //
 // Test code: it allocates (traces, std::function).
 #pragma once
@@ -34,8 +33,60 @@ struct Shown {
   uint32_t error_id = 0;
 };
 
+// The image compared between the two runs, every tick: every field of the NC→PLC image the
+// kernel publishes for these blocks (bar the cycle counter), and the PLC→NC words the program
+// and the bad blocks write (override, control word, external set values).
+struct Sample {
+  uint32_t state_dword, error_code, axis_state, warning;
+  double act_pos, modulo_act_pos, act_velo, pos_diff, set_pos, modulo_set_pos, set_velo, set_acc,
+      set_jerk, target_pos;
+  double compensation_distance, compensation_length, compensation_velocity_diff;
+  uint16_t cmd_no, cmd_state;
+  uint32_t override_raw, control_dword;
+  double ext_pos, ext_velo, ext_acc;
+  int32_t ext_direction;
+  bool operator==(const Sample&) const = default;
+};
+
+inline Sample sample(const plc::AXIS_REF& axis) {
+  const plc::NCTOPLC_AXIS_REF& n = axis.NcToPlc;
+  const plc::PLCTONC_AXIS_REF& p = axis.PlcToNc;
+  return Sample{n.StateDWord,
+                n.ErrorCode,
+                n.AxisState,
+                n.Warning,
+                n.ActPos,
+                n.ModuloActPos,
+                n.ActVelo,
+                n.PosDiff,
+                n.SetPos,
+                n.ModuloSetPos,
+                n.SetVelo,
+                n.SetAcc,
+                n.SetJerk,
+                n.TargetPos,
+                n.CompensationDistance,
+                n.CompensationLength,
+                n.CompensationVelocityDiff,
+                n.CmdNo,
+                n.CmdState,
+                p.Override,
+                p.ControlDWord,
+                p.ExtSetPos,
+                p.ExtSetVelo,
+                p.ExtSetAcc,
+                p.ExtSetDirection};
+}
+
+// One call of an Execute block with Execute = `execute`, and what it shows.
+template <class Block>
+Shown call_execute(Block& block, plc::AXIS_REF& axis, bool execute = true) {
+  block.Execute = execute;
+  block(axis);
+  return Shown{block.Busy, block.Error, block.ErrorID};
+}
+
 // One run of the program: the per-tick image samples and what the move and the bad block did.
-template <class Sample>
 struct Run {
   std::vector<Sample> trace;
   int64_t move_done_tick = -1;
@@ -54,16 +105,14 @@ struct Injection {
 
 // Runs the program for kRunTicks ticks on an axis with `config`, sampling the axis after each
 // tick; without an injection (nullptr) it is the reference run.
-template <class Sample>
-Run<Sample> run_program(const nc::AxisConfig& config, Sample (*sample)(const plc::AXIS_REF&),
-                        const Injection* bad) {
+inline Run run_program(const nc::AxisConfig& config, const Injection* bad) {
   nc::Kernel kernel(nc::KernelConfig{kCycle});
   plc::AXIS_REF& axis = kernel.add_axis(config);
   nc::CycleDriver driver(kernel);
 
   fb::MC_Power power;
   fb::MC_MoveAbsolute move;
-  Run<Sample> result;
+  Run result;
   result.trace.reserve(kRunTicks);
 
   driver.add_task("plc", kCycle, [&] {
@@ -93,8 +142,7 @@ Run<Sample> run_program(const nc::AxisConfig& config, Sample (*sample)(const plc
 // The bad block: Error with `code` by the call after the NC saw the command, and it stays while
 // Execute stays high; never accepted. Nothing else changed: the running move ends as in `ref`,
 // and the sampled image is the same at every tick.
-template <class Sample>
-void require_refused_without_effect(const Run<Sample>& bad, const Run<Sample>& ref, uint32_t code) {
+inline void require_refused_without_effect(const Run& bad, const Run& ref, uint32_t code) {
   REQUIRE(bad.bad.size() > 2);
   for (std::size_t i = 1; i < bad.bad.size(); ++i) {
     INFO("call " << i << " after the rising edge");
