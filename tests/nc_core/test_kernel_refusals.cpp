@@ -3,22 +3,20 @@
 // runs, and their NC→PLC images stay bit-identical afterwards (SPEC B2, NC_ERROR_CODES.md).
 #include <catch2/catch.hpp>
 
-#include <limits>
 #include <string>
 #include <vector>
 
 #include "refusal_check.hpp"
 
 using kt::Bad;
+using kt::kInf;
+using kt::kNaN;
 using kt::with;
 using plc::CommandState;
 using plc::CommandType;
 using plc::ErrorCode;
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // The images are compared for 100 cycles after each refusal.
 void expect_refused(kt::TwinKernels& t, const Bad& bad) {

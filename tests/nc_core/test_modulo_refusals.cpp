@@ -3,28 +3,18 @@
 // bit-identical (SPEC B1, NC_ERROR_CODES.md).
 #include <catch2/catch.hpp>
 
-#include <limits>
 #include <string>
 #include <vector>
 
 #include "refusal_check.hpp"
 
 using kt::Bad;
+using kt::expect_refused_without_effect;
+using kt::kInf;
+using kt::kNaN;
 using kt::with;
 using plc::CommandType;
 using plc::ErrorCode;
-
-namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
-// The images are compared for 50 cycles after each refusal.
-void expect_refused(kt::TwinKernels& t, const Bad& bad) {
-  kt::expect_refused_without_effect(t, bad, 50);
-}
-
-}  // namespace
 
 TEST_CASE("bad MoveModulo inputs are refused with their code and disturb nothing",
           "[modulo][refusals]") {
@@ -74,7 +64,7 @@ TEST_CASE("bad MoveModulo inputs are refused with their code and disturb nothing
   buffered.buffer_mode = 1;
   bads.push_back({"buffered", buffered, ErrorCode::kBufferModeNotSupported});
   for (const Bad& b : bads)
-    expect_refused(t, b);
+    expect_refused_without_effect(t, b);
   CHECK(t.probe.x->NcToPlc.SetVelo == 1000.0);
 }
 
@@ -82,8 +72,8 @@ TEST_CASE("MoveModulo with MC_Current_Direction at standstill is refused with kD
           "[modulo][refusals]") {
   kt::TwinKernels t(kt::refusal_axis());
   t.cycles(5);
-  expect_refused(t, {"current direction at rest", kt::move_modulo(90.0, 1000.0, 4),
-                     ErrorCode::kDirectionInvalid});
+  expect_refused_without_effect(t, {"current direction at rest", kt::move_modulo(90.0, 1000.0, 4),
+                                    ErrorCode::kDirectionInvalid});
 }
 
 TEST_CASE("MoveModulo on a locked axis or an axis in error is refused", "[modulo][refusals]") {
@@ -93,8 +83,8 @@ TEST_CASE("MoveModulo on a locked axis or an axis in error is refused", "[modulo
     t.cycles(300);
     t.both(kt::simple(CommandType::kStop));
     t.cycles(20);
-    expect_refused(t,
-                   {"locked", kt::move_modulo(90.0, 1000.0, 1), ErrorCode::kMotionCommandsLocked});
+    expect_refused_without_effect(
+        t, {"locked", kt::move_modulo(90.0, 1000.0, 1), ErrorCode::kMotionCommandsLocked});
   }
   SECTION("in error") {
     kt::TwinKernels t(kt::refusal_axis());
@@ -102,6 +92,7 @@ TEST_CASE("MoveModulo on a locked axis or an axis in error is refused", "[modulo
     t.cycles(300);
     t.enables(true, false, true);
     t.cycles(2);
-    expect_refused(t, {"in error", kt::move_modulo(90.0, 1000.0, 3), ErrorCode::kAxisInErrorState});
+    expect_refused_without_effect(
+        t, {"in error", kt::move_modulo(90.0, 1000.0, 3), ErrorCode::kAxisInErrorState});
   }
 }

@@ -3,26 +3,20 @@
 // images stay bit-identical (SPEC B5, B6, NC_ERROR_CODES.md).
 #include <catch2/catch.hpp>
 
-#include <limits>
 #include <string>
 #include <vector>
 
 #include "refusal_check.hpp"
 
 using kt::Bad;
+using kt::expect_refused_without_effect;
+using kt::kInf;
+using kt::kNaN;
 using plc::CommandState;
 using plc::CommandType;
 using plc::ErrorCode;
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
-// The images are compared for 50 cycles after each refusal.
-void expect_refused(kt::TwinKernels& t, const Bad& bad) {
-  kt::expect_refused_without_effect(t, bad, 50);
-}
 
 std::vector<Bad> bad_inputs() {
   std::vector<Bad> out;
@@ -62,7 +56,7 @@ TEST_CASE("bad NewPos and NewPosAndVelo inputs during a positioning are refused 
   t.both(kt::move_absolute(50000.0, 1000.0));
   t.cycles(300);
   for (const Bad& b : bad_inputs())
-    expect_refused(t, b);
+    expect_refused_without_effect(t, b);
   CHECK(t.probe.x->NcToPlc.SetVelo == Approx(1000.0).margin(1e-9));
 }
 
@@ -71,17 +65,19 @@ TEST_CASE("without a positioning job NewPos and NewPosAndVelo are refused with 0
   SECTION("at standstill") {
     kt::TwinKernels t(kt::refusal_axis());
     t.cycles(5);
-    expect_refused(t, {"NewPos", kt::new_pos(100.0), ErrorCode::kFunctionNotAllowed});
-    expect_refused(t, {"NewPosAndVelo", kt::new_pos_and_velo(100.0, 500.0, 50.0),
-                       ErrorCode::kFunctionNotAllowed});
+    expect_refused_without_effect(t,
+                                  {"NewPos", kt::new_pos(100.0), ErrorCode::kFunctionNotAllowed});
+    expect_refused_without_effect(t, {"NewPosAndVelo", kt::new_pos_and_velo(100.0, 500.0, 50.0),
+                                      ErrorCode::kFunctionNotAllowed});
   }
   SECTION("during a velocity move") {
     kt::TwinKernels t(kt::refusal_axis());
     t.both(kt::move_velocity(1000.0, 1));
     t.cycles(300);
-    expect_refused(t, {"NewPos", kt::new_pos(100.0), ErrorCode::kFunctionNotAllowed});
-    expect_refused(t, {"NewPosAndVelo", kt::new_pos_and_velo(100.0, 500.0, 50.0),
-                       ErrorCode::kFunctionNotAllowed});
+    expect_refused_without_effect(t,
+                                  {"NewPos", kt::new_pos(100.0), ErrorCode::kFunctionNotAllowed});
+    expect_refused_without_effect(t, {"NewPosAndVelo", kt::new_pos_and_velo(100.0, 500.0, 50.0),
+                                      ErrorCode::kFunctionNotAllowed});
   }
 }
 
@@ -93,9 +89,9 @@ TEST_CASE("while a stop is active NewPos and NewPosAndVelo are refused with 0x42
     t.cycles(300);
     t.both(kt::simple(stop));
     t.cycles(20);
-    expect_refused(t, {"NewPos", kt::new_pos(100.0), ErrorCode::kStopAlreadyActive});
-    expect_refused(t, {"NewPosAndVelo", kt::new_pos_and_velo(100.0, 500.0, 50.0),
-                       ErrorCode::kStopAlreadyActive});
+    expect_refused_without_effect(t, {"NewPos", kt::new_pos(100.0), ErrorCode::kStopAlreadyActive});
+    expect_refused_without_effect(t, {"NewPosAndVelo", kt::new_pos_and_velo(100.0, 500.0, 50.0),
+                                      ErrorCode::kStopAlreadyActive});
   }
 }
 
@@ -107,8 +103,8 @@ TEST_CASE("on an axis in error NewPos and NewPosAndVelo are refused with kAxisIn
   t.enables(true, false, true);  // feed enable plus gone: error 0x4358
   t.cycles(2);
   REQUIRE(t.probe.x->NcToPlc.ErrorCode == kt::id(ErrorCode::kFeedEnablePlusMissing));
-  expect_refused(t, {"NewPos", kt::new_pos(100.0), ErrorCode::kAxisInErrorState});
-  expect_refused(
+  expect_refused_without_effect(t, {"NewPos", kt::new_pos(100.0), ErrorCode::kAxisInErrorState});
+  expect_refused_without_effect(
       t, {"NewPosAndVelo", kt::new_pos_and_velo(100.0, 500.0, 50.0), ErrorCode::kAxisInErrorState});
 }
 
@@ -118,9 +114,11 @@ TEST_CASE("a new end position needing a direction without feed enable is refused
   t.enables(true, true, false);
   t.both(kt::move_absolute(50000.0, 1000.0));
   t.cycles(300);
-  expect_refused(t, {"NewPos behind", kt::new_pos(-100.0), ErrorCode::kNoControllerOrFeedEnable});
-  expect_refused(t, {"NewPosAndVelo behind", kt::new_pos_and_velo(-100.0, 500.0, 0.0),
-                     ErrorCode::kNoControllerOrFeedEnable});
+  expect_refused_without_effect(
+      t, {"NewPos behind", kt::new_pos(-100.0), ErrorCode::kNoControllerOrFeedEnable});
+  expect_refused_without_effect(t,
+                                {"NewPosAndVelo behind", kt::new_pos_and_velo(-100.0, 500.0, 0.0),
+                                 ErrorCode::kNoControllerOrFeedEnable});
 }
 
 TEST_CASE("during a position compensation NewPos and NewPosAndVelo are refused with 0x4245",
@@ -134,7 +132,7 @@ TEST_CASE("during a position compensation NewPos and NewPosAndVelo are refused w
       t.both(kt::move_superimposed(250.0, 300.0, 500.0, 1000.0, 2000.0, 5000.0));
   t.cycles(10);
   REQUIRE(t.probe.state_of(compensation) == CommandState::kActive);
-  expect_refused(t, {"NewPos", kt::new_pos(100.0), ErrorCode::kCompensationActive});
-  expect_refused(t, {"NewPosAndVelo", kt::new_pos_and_velo(100.0, 500.0, 50.0),
-                     ErrorCode::kCompensationActive});
+  expect_refused_without_effect(t, {"NewPos", kt::new_pos(100.0), ErrorCode::kCompensationActive});
+  expect_refused_without_effect(t, {"NewPosAndVelo", kt::new_pos_and_velo(100.0, 500.0, 50.0),
+                                    ErrorCode::kCompensationActive});
 }

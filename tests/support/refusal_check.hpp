@@ -7,11 +7,15 @@
 #include <catch2/catch.hpp>
 
 #include <cstdint>
+#include <limits>
 #include <string>
 
 #include "kernel_harness.hpp"
 
 namespace kt {
+
+inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+inline constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // Vmax 2200, Vref 2100 (so "above Vref" and "above Vmax" are separate cases); software limits
 // ±100000 enabled.
@@ -40,7 +44,7 @@ inline plc::Command with(plc::Command c, double plc::Command::*field, double val
 
 // Posts `bad` to the probe only; checks the refusal and that the images stay the same for
 // `cycles_after` cycles after it.
-inline void expect_refused_without_effect(TwinKernels& t, const Bad& bad, int cycles_after) {
+inline void expect_refused_without_effect(TwinKernels& t, const Bad& bad, int cycles_after = 50) {
   INFO(bad.what);
   const uint16_t n = t.probe.post(bad.command);
   t.cycles(1);
