@@ -1,22 +1,16 @@
 #include "fb/mc_move_absolute.hpp"
 
+#include "fb/detail/move_command.hpp"
+
 namespace fb {
 
 void MC_MoveAbsolute::operator()(plc::AXIS_REF& axis) noexcept {
   const detail::ExecuteOutputs out = block_(Execute, axis, [this]() noexcept {
-    return detail::motion_start(plc::CommandType::kMoveAbsolute, {.position = Position,
-                                                                  .velocity = Velocity,
-                                                                  .acceleration = Acceleration,
-                                                                  .deceleration = Deceleration,
-                                                                  .jerk = Jerk,
-                                                                  .buffer_mode = BufferMode});
+    return detail::motion_start(plc::CommandType::kMoveAbsolute,
+                                detail::move_inputs(*this, Position));
   });
   Done = out.done;
-  Busy = out.busy;
-  Active = out.active;
-  CommandAborted = out.aborted;
-  Error = out.error;
-  ErrorID = out.error_id;
+  detail::show_outputs(*this, out);
 }
 
 }  // namespace fb

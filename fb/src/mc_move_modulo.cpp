@@ -1,5 +1,7 @@
 #include "fb/mc_move_modulo.hpp"
 
+#include "fb/detail/move_command.hpp"
+
 namespace fb {
 
 void MC_MoveModulo::operator()(plc::AXIS_REF& axis) noexcept {
@@ -8,20 +10,11 @@ void MC_MoveModulo::operator()(plc::AXIS_REF& axis) noexcept {
         Direction != MC_Negative_Direction && Direction != MC_Current_Direction) {
       return detail::refuse(plc::ErrorCode::kDirectionInvalid);
     }
-    return detail::motion_start(plc::CommandType::kMoveModulo, {.position = Position,
-                                                                .velocity = Velocity,
-                                                                .acceleration = Acceleration,
-                                                                .deceleration = Deceleration,
-                                                                .jerk = Jerk,
-                                                                .direction = Direction,
-                                                                .buffer_mode = BufferMode});
+    return detail::motion_start(plc::CommandType::kMoveModulo,
+                                detail::move_inputs(*this, Position, Direction));
   });
   Done = out.done;
-  Busy = out.busy;
-  Active = out.active;
-  CommandAborted = out.aborted;
-  Error = out.error;
-  ErrorID = out.error_id;
+  detail::show_outputs(*this, out);
 }
 
 }  // namespace fb

@@ -1,22 +1,16 @@
 #include "fb/mc_move_relative.hpp"
 
+#include "fb/detail/move_command.hpp"
+
 namespace fb {
 
 void MC_MoveRelative::operator()(plc::AXIS_REF& axis) noexcept {
   const detail::ExecuteOutputs out = block_(Execute, axis, [this]() noexcept {
-    return detail::motion_start(plc::CommandType::kMoveRelative, {.position = Distance,
-                                                                  .velocity = Velocity,
-                                                                  .acceleration = Acceleration,
-                                                                  .deceleration = Deceleration,
-                                                                  .jerk = Jerk,
-                                                                  .buffer_mode = BufferMode});
+    return detail::motion_start(plc::CommandType::kMoveRelative,
+                                detail::move_inputs(*this, Distance));
   });
   Done = out.done;
-  Busy = out.busy;
-  Active = out.active;
-  CommandAborted = out.aborted;
-  Error = out.error;
-  ErrorID = out.error_id;
+  detail::show_outputs(*this, out);
 }
 
 }  // namespace fb

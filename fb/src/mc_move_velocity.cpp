@@ -1,5 +1,7 @@
 #include "fb/mc_move_velocity.hpp"
 
+#include "fb/detail/move_command.hpp"
+
 namespace fb {
 
 void MC_MoveVelocity::operator()(plc::AXIS_REF& axis) noexcept {
@@ -9,20 +11,13 @@ void MC_MoveVelocity::operator()(plc::AXIS_REF& axis) noexcept {
         Direction != MC_Current_Direction) {
       return detail::refuse(plc::ErrorCode::kDirectionInvalid);
     }
-    return detail::motion_start(plc::CommandType::kMoveVelocity, {.velocity = Velocity,
-                                                                  .acceleration = Acceleration,
-                                                                  .deceleration = Deceleration,
-                                                                  .jerk = Jerk,
-                                                                  .direction = Direction,
-                                                                  .buffer_mode = BufferMode});
+    return detail::motion_start(plc::CommandType::kMoveVelocity,
+                                detail::move_inputs(*this, 0.0, Direction));
   });
-  // A velocity job has no end of its own; a kDone answer (never sent for it) shows nothing.
+  // A velocity job has no end of its own; a kDone answer (never sent for it)
+  // shows nothing.
   InVelocity = out.reached;
-  Busy = out.busy;
-  Active = out.active;
-  CommandAborted = out.aborted;
-  Error = out.error;
-  ErrorID = out.error_id;
+  detail::show_outputs(*this, out);
 }
 
 }  // namespace fb
