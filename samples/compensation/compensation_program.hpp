@@ -35,6 +35,7 @@
 #include "nc_core/scope.hpp"
 #include "nc_core/svg_plot.hpp"
 #include "plc_interface/axis_ref.hpp"
+#include "sample_output.hpp"
 
 namespace compensation {
 
@@ -182,10 +183,7 @@ inline nc::AxisConfig sample_axis_config() {
   config.name = "Axis1";
   config.max_velocity = 3000.0;
   config.ref_velocity = 3000.0;
-  config.drive_model = nc::DriveModel::kFirstOrderLag;
-  config.drive_time_constant = 0.001;
-  config.drive_dead_time = 0.001;
-  config.position_kv = 5.0;
+  sample_common::use_lagging_drive(config, 5.0);
   return config;
 }
 
@@ -196,9 +194,7 @@ class CompensationSample {
       : kernel_(nc::KernelConfig{options.nc_cycle}),
         axis_(kernel_.add_axis(sample_axis_config())),
         driver_(kernel_),
-        scope_(static_cast<std::size_t>(
-                   std::ceil((options.timeout + options.settle_time) / options.nc_cycle)) +
-               2),
+        scope_(sample_common::scope_capacity(options)),
         options_(options) {
     main_.figure = figure;
     scope_.add_motion_signals(axis_, "Axis1");
@@ -212,12 +208,13 @@ class CompensationSample {
   CompensationSample& operator=(const CompensationSample&) = delete;
 
   const Report& run() {
-    const auto stopped = [this] {
-      return main_.state == CompState::STATE_FINISHED || main_.state == CompState::STATE_ERROR;
-    };
-    report_.finished =
-        driver_.run_until(stopped, options_.timeout) && main_.state == CompState::STATE_FINISHED;
-    if (report_.finished) driver_.run_for(options_.settle_time);
+    report_.finished = sample_common::run_and_settle(
+        driver_,
+        [this] {
+          return main_.state == CompState::STATE_FINISHED || main_.state == CompState::STATE_ERROR;
+        },
+        [this] { return main_.state == CompState::STATE_FINISHED; }, options_.timeout,
+        options_.settle_time);
     sample();
     report_.error_id = main_.error_id;
     report_.final_set_pos = axis_.NcToPlc.SetPos;
@@ -233,8 +230,7 @@ class CompensationSample {
   std::pair<std::filesystem::path, std::filesystem::path> write(
       const std::filesystem::path& dir) const {
     const Figure& f = main_.figure;
-    const auto csv = dir / (std::string(f.name) + ".csv");
-    const auto svg = dir / (std::string(f.name) + ".svg");
+    const auto [csv, svg] = sample_common::csv_and_svg(dir, f.name);
     scope_.write_csv(csv);
     std::vector<nc::PlotPanel> panels = nc::motion_panels(scope_, "Axis1");
     panels.push_back(
@@ -271,10 +267,8 @@ class CompensationSample {
                   report_.max_set_velocity, report_.max_following_error, report_.end_time);
     std::string out = text;
     if (report_.error_id != 0 || report_.axis_error != 0) {
-      std::snprintf(text, sizeof text, "  error: block 0x%X, axis 0x%X (state %s)\n",
-                    static_cast<unsigned>(report_.error_id),
-                    static_cast<unsigned>(report_.axis_error), state_name(main_.state));
-      out += text;
+      out += sample_common::error_line("block", report_.error_id, report_.axis_error,
+                                       state_name(main_.state));
     }
     return out;
   }
@@ -287,9 +281,8 @@ class CompensationSample {
  private:
   void sample() noexcept {
     scope_.record(kernel_.time());
-    report_.max_following_error =
-        std::max(report_.max_following_error, std::fabs(axis_.NcToPlc.PosDiff));
-    report_.max_set_velocity = std::max(report_.max_set_velocity, std::fabs(axis_.NcToPlc.SetVelo));
+    sample_common::track_max(report_.max_following_error, axis_.NcToPlc.PosDiff);
+    sample_common::track_max(report_.max_set_velocity, axis_.NcToPlc.SetVelo);
   }
 
   void plc_cycle() noexcept {

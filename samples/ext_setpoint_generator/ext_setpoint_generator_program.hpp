@@ -38,6 +38,7 @@
 #include "nc_core/scope.hpp"
 #include "nc_core/svg_plot.hpp"
 #include "plc_interface/axis_ref.hpp"
+#include "sample_output.hpp"
 
 namespace ext_setpoint_generator {
 
@@ -271,10 +272,7 @@ struct Options {
 inline nc::AxisConfig sample_axis_config() {
   nc::AxisConfig config;
   config.name = "Axis1";
-  config.drive_model = nc::DriveModel::kFirstOrderLag;
-  config.drive_time_constant = 0.001;
-  config.drive_dead_time = 0.001;
-  config.position_kv = 5.0;
+  sample_common::use_lagging_drive(config, 5.0);
   return config;
 }
 
@@ -285,9 +283,7 @@ class ExtSetpointGeneratorSample {
       : kernel_(nc::KernelConfig{options.nc_cycle}),
         axis_(kernel_.add_axis(sample_axis_config())),
         driver_(kernel_),
-        scope_(static_cast<std::size_t>(
-                   std::ceil((options.timeout + options.settle_time) / options.nc_cycle)) +
-               2),
+        scope_(sample_common::scope_capacity(options)),
         options_(options) {
     main_.cycle_time = options.nc_cycle;
     scope_.add_motion_signals(axis_, "Axis1");
@@ -306,12 +302,13 @@ class ExtSetpointGeneratorSample {
   ExtSetpointGeneratorSample& operator=(const ExtSetpointGeneratorSample&) = delete;
 
   const Report& run() {
-    const auto stopped = [this] {
-      return main_.state == GenState::STATE_FINISHED || main_.state == GenState::STATE_ERROR;
-    };
-    report_.finished =
-        driver_.run_until(stopped, options_.timeout) && main_.state == GenState::STATE_FINISHED;
-    if (report_.finished) driver_.run_for(options_.settle_time);
+    report_.finished = sample_common::run_and_settle(
+        driver_,
+        [this] {
+          return main_.state == GenState::STATE_FINISHED || main_.state == GenState::STATE_ERROR;
+        },
+        [this] { return main_.state == GenState::STATE_FINISHED; }, options_.timeout,
+        options_.settle_time);
     sample();
     report_.error_id = main_.error_id;
     report_.final_set_pos = axis_.NcToPlc.SetPos;
@@ -327,8 +324,7 @@ class ExtSetpointGeneratorSample {
   // After-run: <dir>/ext_setpoint_generator.csv and .svg; returns their paths.
   std::pair<std::filesystem::path, std::filesystem::path> write(
       const std::filesystem::path& dir) const {
-    const auto csv = dir / "ext_setpoint_generator.csv";
-    const auto svg = dir / "ext_setpoint_generator.svg";
+    const auto [csv, svg] = sample_common::csv_and_svg(dir, "ext_setpoint_generator");
     scope_.write_csv(csv);
     std::vector<nc::PlotPanel> panels = nc::motion_panels(scope_, "Axis1");
     // The fed packet beside the set values: they coincide wherever the direction is ±1.
@@ -381,10 +377,8 @@ class ExtSetpointGeneratorSample {
                   report_.end_time);
     out += text;
     if (report_.error_id != 0 || report_.axis_error != 0) {
-      std::snprintf(text, sizeof text, "  error: program 0x%X, axis 0x%X (state %s)\n",
-                    static_cast<unsigned>(report_.error_id),
-                    static_cast<unsigned>(report_.axis_error), state_name(main_.state));
-      out += text;
+      out += sample_common::error_line("program", report_.error_id, report_.axis_error,
+                                       state_name(main_.state));
     }
     return out;
   }
@@ -398,8 +392,7 @@ class ExtSetpointGeneratorSample {
   // Scope task: the NC image of the last cycle beside the packet the PLC fed for it.
   void sample() noexcept {
     scope_.record(kernel_.time());
-    report_.max_following_error =
-        std::max(report_.max_following_error, std::fabs(axis_.NcToPlc.PosDiff));
+    sample_common::track_max(report_.max_following_error, axis_.NcToPlc.PosDiff);
     if (fed_direction_ != 0 && kernel_.cycle_count() > 0) {
       report_.max_set_minus_fed =
           std::max(report_.max_set_minus_fed, std::fabs(axis_.NcToPlc.SetPos - fed_pos_));

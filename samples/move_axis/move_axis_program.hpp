@@ -26,6 +26,7 @@
 #include "nc_core/scope.hpp"
 #include "nc_core/svg_plot.hpp"
 #include "plc_interface/axis_ref.hpp"
+#include "sample_output.hpp"
 
 namespace move_axis {
 
@@ -154,10 +155,7 @@ struct Options {
 inline nc::AxisConfig sample_axis_config() {
   nc::AxisConfig config;
   config.name = "Axis1";
-  config.drive_model = nc::DriveModel::kFirstOrderLag;
-  config.drive_time_constant = 0.001;
-  config.drive_dead_time = 0.001;
-  config.position_kv = 5.0;
+  sample_common::use_lagging_drive(config, 5.0);
   return config;
 }
 
@@ -168,9 +166,7 @@ class MoveAxisSample {
       : kernel_(nc::KernelConfig{options.nc_cycle}),
         axis_(kernel_.add_axis(sample_axis_config())),
         driver_(kernel_),
-        scope_(static_cast<std::size_t>(
-                   std::ceil((options.timeout + options.settle_time) / options.nc_cycle)) +
-               2),
+        scope_(sample_common::scope_capacity(options)),
         options_(options) {
     scope_.add_motion_signals(axis_, "Axis1");
     scope_.add_signal(axis_, "Axis1", nc::Signal::kTargetPos);
@@ -186,11 +182,11 @@ class MoveAxisSample {
   // Runs until MOVESTATE_FINISHED (then settle_time longer), a block error or the timeout;
   // records the last cycle too.
   const Report& run() {
-    report_.finished = driver_.run_until(
+    report_.finished = sample_common::run_and_settle(
+        driver_,
         [this] { return main_.state == MoveState::MOVESTATE_FINISHED || report_.block_error; },
-        options_.timeout);
-    report_.finished = report_.finished && main_.state == MoveState::MOVESTATE_FINISHED;
-    if (report_.finished) driver_.run_for(options_.settle_time);
+        [this] { return main_.state == MoveState::MOVESTATE_FINISHED; }, options_.timeout,
+        options_.settle_time);
     sample();
     report_.final_set_pos = axis_.NcToPlc.SetPos;
     report_.final_act_pos = axis_.NcToPlc.ActPos;
@@ -202,8 +198,7 @@ class MoveAxisSample {
   // After-run: <dir>/move_axis.csv and <dir>/move_axis.svg; returns their paths.
   std::pair<std::filesystem::path, std::filesystem::path> write(
       const std::filesystem::path& dir) const {
-    const auto csv = dir / "move_axis.csv";
-    const auto svg = dir / "move_axis.svg";
+    const auto [csv, svg] = sample_common::csv_and_svg(dir, "move_axis");
     scope_.write_csv(csv);
     nc::write_motion_svg(svg, scope_, "Axis1",
                          {"MoveAxis (seed 000 \u00a74.3): 0 \u2192 2000 mm \u2192 0 mm, "
@@ -247,9 +242,8 @@ class MoveAxisSample {
  private:
   void sample() noexcept {
     scope_.record(kernel_.time());
-    report_.max_following_error =
-        std::max(report_.max_following_error, std::fabs(axis_.NcToPlc.PosDiff));
-    report_.max_set_velocity = std::max(report_.max_set_velocity, std::fabs(axis_.NcToPlc.SetVelo));
+    sample_common::track_max(report_.max_following_error, axis_.NcToPlc.PosDiff);
+    sample_common::track_max(report_.max_set_velocity, axis_.NcToPlc.SetVelo);
   }
 
   // Runs PROGRAM MAIN and notes when things happen. Times are the tick's time: the NcToPlc the

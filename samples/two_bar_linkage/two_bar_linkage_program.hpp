@@ -45,6 +45,7 @@
 #include "nc_core/scope.hpp"
 #include "nc_core/svg_plot.hpp"
 #include "plc_interface/axis_ref.hpp"
+#include "sample_output.hpp"
 
 namespace two_bar_linkage {
 
@@ -291,10 +292,7 @@ inline nc::AxisConfig joint_axis_config(const char* name) {
   config.acceleration = 720.0;  // °/s²
   config.deceleration = 720.0;
   config.jerk = 7200.0;  // °/s³
-  config.drive_model = nc::DriveModel::kFirstOrderLag;
-  config.drive_time_constant = 0.001;
-  config.drive_dead_time = 0.001;
-  config.position_kv = 20.0;
+  sample_common::use_lagging_drive(config, 20.0);
   config.encoder_increment = 1e-6;     // °
   config.following_error_limit = 1.0;  // °
   config.target_window = 0.01;         // °
@@ -438,9 +436,7 @@ class TwoBarLinkageSample {
         joint1_(kernel_.add_axis(joint_axis_config("Joint1"))),
         joint2_(kernel_.add_axis(joint_axis_config("Joint2"))),
         driver_(kernel_),
-        scope_(static_cast<std::size_t>(
-                   std::ceil((options.timeout + options.settle_time) / options.nc_cycle)) +
-               2),
+        scope_(sample_common::scope_capacity(options)),
         options_(options) {
     main_.cycle_time = options.nc_cycle;
     for (const auto& [axis, name] :
@@ -467,12 +463,13 @@ class TwoBarLinkageSample {
   TwoBarLinkageSample& operator=(const TwoBarLinkageSample&) = delete;
 
   const Report& run() {
-    const auto stopped = [this] {
-      return main_.state == LinkState::STATE_FINISHED || main_.state == LinkState::STATE_ERROR;
-    };
-    report_.finished =
-        driver_.run_until(stopped, options_.timeout) && main_.state == LinkState::STATE_FINISHED;
-    if (report_.finished) driver_.run_for(options_.settle_time);
+    report_.finished = sample_common::run_and_settle(
+        driver_,
+        [this] {
+          return main_.state == LinkState::STATE_FINISHED || main_.state == LinkState::STATE_ERROR;
+        },
+        [this] { return main_.state == LinkState::STATE_FINISHED; }, options_.timeout,
+        options_.settle_time);
     sample();
     report_.error_id = main_.error_id;
     report_.line_duration = main_.path.duration();
@@ -596,10 +593,8 @@ class TwoBarLinkageSample {
         scope_.dropped(), report_.end_time);
     std::string out = text;
     if (report_.error_id != 0 || report_.axis_error != 0) {
-      std::snprintf(text, sizeof text, "  error: program 0x%X, axis 0x%X (state %s)\n",
-                    static_cast<unsigned>(report_.error_id),
-                    static_cast<unsigned>(report_.axis_error), state_name(main_.state));
-      out += text;
+      out += sample_common::error_line("program", report_.error_id, report_.axis_error,
+                                       state_name(main_.state));
     }
     return out;
   }
@@ -635,8 +630,7 @@ class TwoBarLinkageSample {
       }
     }
     for (std::size_t i = 0; i < 2; ++i) {
-      report_.max_following_error[i] =
-          std::max(report_.max_following_error[i], std::fabs(joint(i).NcToPlc.PosDiff));
+      sample_common::track_max(report_.max_following_error[i], joint(i).NcToPlc.PosDiff);
     }
   }
 

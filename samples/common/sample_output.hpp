@@ -1,0 +1,69 @@
+// What the sample programs (samples/*/…_program.hpp) share around their PROGRAM MAIN: the size
+// of the scope for a run, the lagging drive of the sample axes, running to the end and settling,
+// the running maxima the scope task keeps, and the names and error line of their outputs.
+// Set-up and after-run helpers (they may allocate); track_max is called from the scope task.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <utility>
+
+#include "nc_core/axis_config.hpp"
+#include "nc_core/cycle_driver.hpp"
+
+namespace sample_common {
+
+// Records for a whole run: `timeout + settle_time` s of NC cycles plus the first and the last
+// record. `Options` is a sample's options (nc_cycle, timeout, settle_time in s).
+template <class Options>
+std::size_t scope_capacity(const Options& options) {
+  return static_cast<std::size_t>(
+             std::ceil((options.timeout + options.settle_time) / options.nc_cycle)) +
+         2;
+}
+
+// The drive of the sample axes: first-order lag of 1 ms plus 1 ms dead time, so the scope shows
+// the following error a real drive leaves; `position_kv` in 1/s.
+inline void use_lagging_drive(nc::AxisConfig& config, double position_kv) {
+  config.drive_model = nc::DriveModel::kFirstOrderLag;
+  config.drive_time_constant = 0.001;
+  config.drive_dead_time = 0.001;
+  config.position_kv = position_kv;
+}
+
+// Runs until `stopped()` or the timeout; when then `finished()`, runs `settle_time` s longer to
+// record the drive settling. Returns whether the program finished.
+template <class Stopped, class Finished>
+bool run_and_settle(nc::CycleDriver& driver, Stopped&& stopped, Finished&& finished, double timeout,
+                    double settle_time) {
+  const bool done = driver.run_until(stopped, timeout) && finished();
+  if (done) driver.run_for(settle_time);
+  return done;
+}
+
+// Keeps the largest |value| seen.
+inline void track_max(double& max, double value) noexcept {
+  max = std::max(max, std::fabs(value));
+}
+
+// <dir>/<stem>.csv and <dir>/<stem>.svg.
+inline std::pair<std::filesystem::path, std::filesystem::path> csv_and_svg(
+    const std::filesystem::path& dir, const std::string& stem) {
+  return {dir / (stem + ".csv"), dir / (stem + ".svg")};
+}
+
+// The summary's error line: "  error: <who> 0x…, axis 0x… (state …)".
+inline std::string error_line(const char* who, uint32_t error_id, uint32_t axis_error,
+                              const char* state) {
+  char text[160];
+  std::snprintf(text, sizeof text, "  error: %s 0x%X, axis 0x%X (state %s)\n", who,
+                static_cast<unsigned>(error_id), static_cast<unsigned>(axis_error), state);
+  return text;
+}
+
+}  // namespace sample_common
