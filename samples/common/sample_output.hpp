@@ -46,6 +46,16 @@ bool run_and_settle(nc::CycleDriver& driver, Stopped&& stopped, Finished&& finis
   return done;
 }
 
+// run_and_settle for a program that ends in one of two states: stops at `finished` or `error`
+// (`state` is read live), settles after `finished`.
+template <class State>
+bool run_to_state(nc::CycleDriver& driver, const State& state, State finished, State error,
+                  double timeout, double settle_time) {
+  return run_and_settle(
+      driver, [&] { return state == finished || state == error; },
+      [&] { return state == finished; }, timeout, settle_time);
+}
+
 // Keeps the largest |value| seen.
 inline void track_max(double& max, double value) noexcept {
   max = std::max(max, std::fabs(value));

@@ -208,13 +208,9 @@ class CompensationSample {
   CompensationSample& operator=(const CompensationSample&) = delete;
 
   const Report& run() {
-    report_.finished = sample_common::run_and_settle(
-        driver_,
-        [this] {
-          return main_.state == CompState::STATE_FINISHED || main_.state == CompState::STATE_ERROR;
-        },
-        [this] { return main_.state == CompState::STATE_FINISHED; }, options_.timeout,
-        options_.settle_time);
+    report_.finished =
+        sample_common::run_to_state(driver_, main_.state, CompState::STATE_FINISHED,
+                                    CompState::STATE_ERROR, options_.timeout, options_.settle_time);
     sample();
     report_.error_id = main_.error_id;
     report_.final_set_pos = axis_.NcToPlc.SetPos;

@@ -302,13 +302,9 @@ class ExtSetpointGeneratorSample {
   ExtSetpointGeneratorSample& operator=(const ExtSetpointGeneratorSample&) = delete;
 
   const Report& run() {
-    report_.finished = sample_common::run_and_settle(
-        driver_,
-        [this] {
-          return main_.state == GenState::STATE_FINISHED || main_.state == GenState::STATE_ERROR;
-        },
-        [this] { return main_.state == GenState::STATE_FINISHED; }, options_.timeout,
-        options_.settle_time);
+    report_.finished =
+        sample_common::run_to_state(driver_, main_.state, GenState::STATE_FINISHED,
+                                    GenState::STATE_ERROR, options_.timeout, options_.settle_time);
     sample();
     report_.error_id = main_.error_id;
     report_.final_set_pos = axis_.NcToPlc.SetPos;

@@ -463,13 +463,9 @@ class TwoBarLinkageSample {
   TwoBarLinkageSample& operator=(const TwoBarLinkageSample&) = delete;
 
   const Report& run() {
-    report_.finished = sample_common::run_and_settle(
-        driver_,
-        [this] {
-          return main_.state == LinkState::STATE_FINISHED || main_.state == LinkState::STATE_ERROR;
-        },
-        [this] { return main_.state == LinkState::STATE_FINISHED; }, options_.timeout,
-        options_.settle_time);
+    report_.finished =
+        sample_common::run_to_state(driver_, main_.state, LinkState::STATE_FINISHED,
+                                    LinkState::STATE_ERROR, options_.timeout, options_.settle_time);
     sample();
     report_.error_id = main_.error_id;
     report_.line_duration = main_.path.duration();
