@@ -40,6 +40,27 @@ struct Run {
   double pos() const { return s * h.x->NcToPlc.SetPos; }    // along the logical direction
   double velo() const { return s * h.x->NcToPlc.SetVelo; }  // along the logical direction
   bool done() const { return h.state_of(move) == CommandState::kDone; }
+
+  // Extremes along the logical direction from now until the move is Done.
+  struct Trace {
+    double fastest_forward = 0.0;   // largest velocity
+    double fastest_backward = 0.0;  // smallest (most negative) velocity
+    double furthest = 0.0;          // largest position
+  };
+  // Runs the move to its end, then asserts the end position and that the limits held throughout.
+  Trace finish(double end_position) {
+    Trace t;
+    while (!done()) {
+      t.fastest_forward = std::max(t.fastest_forward, velo());
+      t.fastest_backward = std::min(t.fastest_backward, velo());
+      t.furthest = std::max(t.furthest, pos());
+      step();
+    }
+    CHECK(pos() == end_position);
+    INFO(checker.first);
+    CHECK(checker.ok());
+    return t;
+  }
 };
 
 const char* name(double s) {
@@ -63,15 +84,7 @@ TEST_CASE("case 1, Pos <= APos <= EPos: VNew from APos on", "[new_pos_and_velo]"
     CHECK(r.velo() == Approx(1000.0).margin(1e-9));  // the cycle in which SetPos passes APos
     r.step();
     CHECK(r.velo() > 1000.0 + 1e-6);  // the next cycle accelerates towards VNew
-    double peak = 0.0;
-    while (!r.done()) {
-      peak = std::max(peak, r.velo());
-      r.step();
-    }
-    CHECK(peak == Approx(2000.0).margin(1e-9));
-    CHECK(r.pos() == 4000.0);
-    INFO(r.checker.first);
-    CHECK(r.checker.ok());
+    CHECK(r.finish(4000.0).fastest_forward == Approx(2000.0).margin(1e-9));
   }
 }
 
@@ -82,15 +95,7 @@ TEST_CASE("case 2, APos <= Pos <= EPos: VNew at once", "[new_pos_and_velo]") {
     r.ask(4000.0, 2000.0, 1000.0);  // APos 1000 < Pos 1150 < EPos 4000
     CHECK(r.velo() > 1000.0 + 1e-6);
     CHECK(r.h.x->NcToPlc.TargetVelo == s * 2000.0);
-    double peak = 0.0;
-    while (!r.done()) {
-      peak = std::max(peak, r.velo());
-      r.step();
-    }
-    CHECK(peak == Approx(2000.0).margin(1e-9));
-    CHECK(r.pos() == 4000.0);
-    INFO(r.checker.first);
-    CHECK(r.checker.ok());
+    CHECK(r.finish(4000.0).fastest_forward == Approx(2000.0).margin(1e-9));
   }
 }
 
@@ -99,18 +104,9 @@ TEST_CASE("case 3, APos <= EPos <= Pos: stop and return with VOld", "[new_pos_an
     INFO(name(s));
     Run r(s);
     r.ask(600.0, 2000.0, 300.0);  // APos 300 < EPos 600 < Pos 1150
-    double furthest = 0.0;
-    double back = 0.0;
-    while (!r.done()) {
-      furthest = std::max(furthest, r.pos());
-      back = std::min(back, r.velo());
-      r.step();
-    }
-    CHECK(furthest > 1150.0);                     // could not stop at once
-    CHECK(back == Approx(-1000.0).margin(1e-9));  // returns with VOld, not VNew
-    CHECK(r.pos() == 600.0);
-    INFO(r.checker.first);
-    CHECK(r.checker.ok());
+    const Run::Trace t = r.finish(600.0);
+    CHECK(t.furthest > 1150.0);                                 // could not stop at once
+    CHECK(t.fastest_backward == Approx(-1000.0).margin(1e-9));  // returns with VOld, not VNew
   }
 }
 
@@ -119,15 +115,7 @@ TEST_CASE("case 4, Pos <= EPos <= APos: only the new end position, VOld", "[new_
     INFO(name(s));
     Run r(s);
     r.ask(3000.0, 2000.0, 4000.0);  // Pos 1150 < EPos 3000 < APos 4000
-    double peak = 0.0;
-    while (!r.done()) {
-      peak = std::max(peak, r.velo());
-      r.step();
-    }
-    CHECK(peak == Approx(1000.0).margin(1e-9));
-    CHECK(r.pos() == 3000.0);
-    INFO(r.checker.first);
-    CHECK(r.checker.ok());
+    CHECK(r.finish(3000.0).fastest_forward == Approx(1000.0).margin(1e-9));
   }
 }
 
@@ -149,15 +137,7 @@ TEST_CASE(
     CHECK(r.velo() == Approx(-1000.0).margin(1e-9));  // the cycle in which SetPos passes APos
     r.step();
     CHECK(r.velo() < -1000.0 - 1e-6);  // then VNew
-    double fastest = 0.0;
-    while (!r.done()) {
-      fastest = std::min(fastest, r.velo());
-      r.step();
-    }
-    CHECK(fastest == Approx(-2000.0).margin(1e-9));
-    CHECK(r.pos() == -1000.0);
-    INFO(r.checker.first);
-    CHECK(r.checker.ok());
+    CHECK(r.finish(-1000.0).fastest_backward == Approx(-2000.0).margin(1e-9));
   }
 }
 
@@ -166,14 +146,6 @@ TEST_CASE("case 6, EPos <= Pos <= APos: stop and return with VOld", "[new_pos_an
     INFO(name(s));
     Run r(s);
     r.ask(600.0, 2000.0, 2000.0);  // EPos 600 < Pos 1150 < APos 2000
-    double back = 0.0;
-    while (!r.done()) {
-      back = std::min(back, r.velo());
-      r.step();
-    }
-    CHECK(back == Approx(-1000.0).margin(1e-9));
-    CHECK(r.pos() == 600.0);
-    INFO(r.checker.first);
-    CHECK(r.checker.ok());
+    CHECK(r.finish(600.0).fastest_backward == Approx(-1000.0).margin(1e-9));
   }
 }
