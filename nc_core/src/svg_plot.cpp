@@ -167,21 +167,86 @@ std::vector<std::size_t> decimate(std::span<const double> time, std::span<const 
   return keep;
 }
 
+// Vertical distance (px) a dropped point may lie from the line drawn instead: well under what the
+// drawing resolution (the 0.01 px of the coordinates, the 1.5 px strokes) can show.
+constexpr double kThinTolerance = 0.05;
+
+// The path of one series, without points that change nothing at the drawn resolution: a point is
+// dropped when the segment from the last kept point to the next kept one passes within
+// kThinTolerance of it (and of every point dropped before it), so a stretch at constant velocity
+// is one segment. The cone of slopes from the kept point that pass all dropped points narrows
+// with every point; a point outside it ends the segment at the one before.
+class PathWriter {
+ public:
+  explicit PathWriter(std::string& d) : d_(d) {}
+
+  void add(double x, double y) {
+    if (!pen_down_) {
+      emit('M', x, y);
+      pen_down_ = true;
+      return;
+    }
+    if (has_pending_) {
+      const double dx = x - anchor_x_;
+      const double slope = dx > 0.0 ? (y - anchor_y_) / dx : 0.0;
+      if (dx <= 0.0 || slope < lo_ || slope > hi_) {
+        emit('L', pending_x_, pending_y_);
+        has_pending_ = false;
+      }
+    }
+    const double dx = x - anchor_x_;
+    if (dx <= 0.0) {
+      emit('L', x, y);
+      return;
+    }
+    if (!has_pending_) {
+      lo_ = -INFINITY;
+      hi_ = INFINITY;
+    }
+    lo_ = std::max(lo_, (y - kThinTolerance - anchor_y_) / dx);
+    hi_ = std::min(hi_, (y + kThinTolerance - anchor_y_) / dx);
+    pending_x_ = x;
+    pending_y_ = y;
+    has_pending_ = true;
+  }
+
+  // The pen lifts (a gap): the run so far ends at its last point.
+  void lift() {
+    if (has_pending_) emit('L', pending_x_, pending_y_);
+    has_pending_ = false;
+    pen_down_ = false;
+  }
+
+ private:
+  void emit(char command, double x, double y) {
+    d_ += command;
+    d_ += coordinate(x);
+    d_ += ',';
+    d_ += coordinate(y);
+    anchor_x_ = x;
+    anchor_y_ = y;
+  }
+
+  std::string& d_;
+  bool pen_down_ = false;
+  bool has_pending_ = false;
+  double anchor_x_ = 0.0, anchor_y_ = 0.0;
+  double pending_x_ = 0.0, pending_y_ = 0.0;
+  double lo_ = -INFINITY, hi_ = INFINITY;
+};
+
 std::string path_data(std::span<const double> time, std::span<const double> values,
                       const Frame& frame) {
   std::string d;
-  bool pen_down = false;
+  PathWriter path(d);
   for (const std::size_t i : decimate(time, values, frame)) {
     if (!std::isfinite(values[i]) || !std::isfinite(time[i])) {
-      pen_down = false;
+      path.lift();
       continue;
     }
-    d += pen_down ? 'L' : 'M';
-    d += coordinate(frame.px(time[i]));
-    d += ',';
-    d += coordinate(frame.py(values[i]));
-    pen_down = true;
+    path.add(frame.px(time[i]), frame.py(values[i]));
   }
+  path.lift();
   return d;
 }
 

@@ -127,11 +127,13 @@ void Scenario::play() {
   // The run covers t = 0 … duration (duration / T + 1 ticks), or ends `after` seconds after the
   // stop condition first holds.
   const double timeout = s.duration + s.cycle_time();
-  if (s.stop_when) {
+  if (s.stop_when || s.stop_when_actions_done) {
     double stop_at = -1.0;
     s.stop_reached = driver.run_until(
         [&s, &stop_at] {
-          if (stop_at < 0.0 && s.holds(*s.stop_when)) stop_at = s.kernel.time() + s.stop_after;
+          const bool holds = s.stop_when ? s.holds(*s.stop_when)
+                                         : s.next_action == s.actions.size();
+          if (stop_at < 0.0 && holds) stop_at = s.kernel.time() + s.stop_after;
           return stop_at >= 0.0 && s.kernel.time() >= stop_at - s.eps();
         },
         timeout);
@@ -159,7 +161,7 @@ void Scenario::Impl::evaluate() {
   results.clear();
   const std::span<const double> time = scope.time();
   const double end = time.empty() ? 0.0 : time.back();
-  if (stop_when) {
+  if (stop_when || stop_when_actions_done) {
     CheckResult r{stop_pointer,
                   "the stop condition holds within the duration (" + number(duration) + " s)",
                   stop_reached, stop_reached ? "reached" : "not reached by " + number(end) + " s"};

@@ -613,8 +613,14 @@ Scenario::Scenario(const json& axes, const json& timeline, std::string axes_file
 
   if (timeline.contains("stop_when")) {
     s.stop_pointer = "/stop_when";
-    s.stop_when =
-        r.condition(timeline["stop_when"], "/stop_when", {"block", "output", "value", "after"});
+    const json& stop = timeline["stop_when"];
+    if (stop.is_object() && stop.contains("actions_done")) {
+      r.keys(stop, "/stop_when", {"actions_done", "after"});
+      if (stop["actions_done"] != true) r.bad("/stop_when/actions_done", "must be true");
+      s.stop_when_actions_done = true;
+    } else {
+      s.stop_when = r.condition(stop, "/stop_when", {"block", "output", "value", "after"});
+    }
     if (timeline["stop_when"].contains("after")) {
       s.stop_after = r.time(timeline["stop_when"]["after"], "/stop_when/after");
     }

@@ -119,6 +119,7 @@ struct Scenario::Impl {
   double plc_period = 0.0;
   double duration = 0.0;
   std::optional<Condition> stop_when;
+  bool stop_when_actions_done = false;  // stop once every action has fired
   double stop_after = 0.0;
   std::string stop_pointer;
   std::vector<AxisSlot> axes;
