@@ -16,6 +16,7 @@ requirements=(
   "nlohmann-json3-dev|/usr/include/nlohmann/json.hpp"
   "libbenchmark-dev|/usr/include/benchmark/benchmark.h"
   "clang-format|clang-format"
+  "chromium|chromium"
 )
 
 missing=()

@@ -88,7 +88,7 @@ std::map<std::string, std::vector<double>> read_csv(const fs::path& path) {
 
 TEST_CASE("the scope page renders, zooms, reads the cursor as trace.csv and hides channels") {
   fs::remove_all(kOut);
-  const std::string timeline = std::string(NCSDK_SCENARIO_DIR) + "/dynamics_1_1.json";
+  const std::string timeline = std::string(NCSDK_SCENARIO_DIR) + "/override_100_75_100.json";
   std::ostringstream out, err;
   const std::vector<std::string> args = {timeline, "--out", (kOut / "run").string(), "--html"};
   REQUIRE(scenario::run_command(args, out, err) == 0);
@@ -122,8 +122,9 @@ TEST_CASE("the scope page renders, zooms, reads the cursor as trace.csv and hide
     ++compared;
   }
   CHECK(compared == 7);
-  // Dynamics 1.1 at 0.75 s: decelerating at A- = 5000 mm/s² (seed 000 §2.1).
-  CHECK(state["cursor"]["values"]["Axis.SetAcc"] == -5000.0);
+  // At 0.75 s the axis cruises at V = 2000 mm/s (override 100 % until 1.0 s, seed 000 §2.2).
+  CHECK(state["cursor"]["values"]["Axis.SetVelo"] == 2000.0);
+  CHECK(state["cursor"]["values"]["Axis.SetAcc"] == 0.0);
 
   // Reset view: without a hash the page shows the whole run and no cursor.
   const nlohmann::json initial = page_state("");
@@ -133,7 +134,7 @@ TEST_CASE("the scope page renders, zooms, reads the cursor as trace.csv and hide
 
   // The screenshot (the README's picture is one of these).
   const fs::path png = kOut / "scope.png";
-  REQUIRE(chromium("--screenshot=" + png.string(), "zoom=0.2,1.2&cursor=0.75", kOut / "shot.log") ==
+  REQUIRE(chromium("--screenshot=" + png.string(), "zoom=0.5,2.8&cursor=1.5", kOut / "shot.log") ==
           0);
   const std::string image = contents(png);
   CHECK(image.size() > 20'000);

@@ -3,8 +3,8 @@
 // numbers as checks). Each scenario runs against the axes file its "axes" key names, and its
 // figure (the timeline's "figure": its one axis or a plot) is written as <out>/<stem>.svg.
 //
-// Usage: ncsdk_gallery [scenario folder, default docs/scenarios] [output folder, default
-// docs/gallery]. Prints one line per figure and every failed check. Exit status 0 when every
+// Usage: ncsdk_gallery [output folder, default docs/gallery] [scenario folder, default
+// docs/scenarios]. Prints one line per figure and every failed check. Exit status 0 when every
 // scenario passed its checks, 1 when a check failed, 2 on a bad scenario file or a write error.
 #include <algorithm>
 #include <cstdio>
@@ -20,8 +20,8 @@
 namespace fs = std::filesystem;
 
 int main(int argc, char** argv) {
-  const fs::path in = argc > 1 ? argv[1] : "docs/scenarios";
-  const fs::path out = argc > 2 ? argv[2] : "docs/gallery";
+  const fs::path out = argc > 1 ? argv[1] : "docs/gallery";
+  const fs::path in = argc > 2 ? argv[2] : "docs/scenarios";
   std::vector<fs::path> files;
   for (const fs::directory_entry& e : fs::directory_iterator(in)) {
     if (e.is_regular_file() && e.path().extension() == ".json") files.push_back(e.path());
