@@ -28,6 +28,13 @@ inline std::filesystem::path write_file(const std::filesystem::path& path,
   return path;
 }
 
+inline std::string contents(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 inline Outcome run(const std::vector<std::string>& args) {
   std::ostringstream out, err;
   Outcome o;

@@ -8,16 +8,7 @@
 
 #include "scenario_files.hpp"
 
-namespace {
-
-std::string contents(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-}  // namespace
+using scenario_test::contents;
 
 TEST_CASE("two runs of a shipped scenario write byte-identical traces") {
   const std::filesystem::path dir = NCSDK_SCENARIO_DIR;

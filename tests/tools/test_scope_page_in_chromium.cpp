@@ -18,8 +18,10 @@
 #include <nlohmann/json.hpp>
 
 #include "ncsdk_run/cli.hpp"
+#include "scenario_files.hpp"
 
 namespace fs = std::filesystem;
+using scenario_test::contents;
 
 namespace {
 
@@ -32,13 +34,6 @@ std::string browser() {
     }
   }
   return {};
-}
-
-std::string contents(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 // Runs headless Chromium on the page with `hash`; `mode` is --dump-dom or --screenshot=…

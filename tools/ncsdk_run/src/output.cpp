@@ -69,7 +69,9 @@ std::string Scenario::svg(const std::string& name) const {
   if (axis != s.axes.end()) {
     panels = nc::motion_panels(s.scope, name);
     for (const std::string& field : s.extra_panels) {
-      const std::size_t index = s.scope.find(name + "." + field);
+      std::string column = name + ".";
+      column += field;
+      const std::size_t index = s.scope.find(column);
       const bool percent = field == "Override";
       std::vector<double>& values = owned.emplace_back();
       for (const double v : s.scope.values(index))

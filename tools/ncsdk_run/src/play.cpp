@@ -131,8 +131,8 @@ void Scenario::play() {
     double stop_at = -1.0;
     s.stop_reached = driver.run_until(
         [&s, &stop_at] {
-          const bool holds = s.stop_when ? s.holds(*s.stop_when)
-                                         : s.next_action == s.actions.size();
+          const bool holds =
+              s.stop_when ? s.holds(*s.stop_when) : s.next_action == s.actions.size();
           if (stop_at < 0.0 && holds) stop_at = s.kernel.time() + s.stop_after;
           return stop_at >= 0.0 && s.kernel.time() >= stop_at - s.eps();
         },

@@ -36,6 +36,12 @@ namespace {
 
 constexpr std::size_t kMaxSamples = 5'000'000;  // NC cycles of one run (the trace's memory)
 
+// "a, b, c": the names an error message offers.
+void append_name(std::string& list, std::string_view name) {
+  if (!list.empty()) list += ", ";
+  list += name;
+}
+
 // The reader of the timeline document: every rule it enforces names the JSON pointer.
 class Reader {
  public:
@@ -52,7 +58,7 @@ class Reader {
       if (std::find(known.begin(), known.end(), item.key()) == known.end()) {
         std::string list;
         for (const std::string_view k : known)
-          list += (list.empty() ? "" : ", ") + std::string(k);
+          append_name(list, k);
         bad(pointer + "/" + item.key(), "unknown key (known here: " + list + ")");
       }
     }
@@ -69,6 +75,13 @@ class Reader {
     if (t < 0.0) bad(pointer, "a time must be >= 0 s, got " + value.dump());
     return t;
   }
+  // object[key], which must be a non-empty array.
+  const json& items(const json& object, const char* key, const std::string& pointer) const {
+    if (!object.contains(key) || !object[key].is_array() || object[key].empty()) {
+      bad(pointer, "required: a non-empty array");
+    }
+    return object[key];
+  }
   std::string text(const json& value, const std::string& pointer) const {
     if (!value.is_string()) bad(pointer, "must be a string, got " + value.dump());
     return value.get<std::string>();
@@ -81,7 +94,7 @@ class Reader {
     }
     std::string list;
     for (const AxisSlot& a : s_.axes)
-      list += (list.empty() ? "" : ", ") + a.name;
+      append_name(list, a.name);
     bad(pointer, "no axis '" + name + "' in " + s_.axes_file + " (axes: " + list + ")");
   }
 
@@ -130,7 +143,7 @@ class Reader {
         std::string list;
         for (int v = 0; v < 256; ++v) {
           const std::string_view n = enum_value_name(port.type, v);
-          if (!n.empty()) list += (list.empty() ? "" : ", ") + std::string(n);
+          if (!n.empty()) append_name(list, n);
         }
         bad(pointer, std::string(port.name) + " takes one of " + list + " (or its number), got " +
                          value.dump());
@@ -166,7 +179,7 @@ class Reader {
   static std::string ports(const BlockType& type, PortKind kind) {
     std::string list;
     for (const Port& p : type.ports) {
-      if (p.kind == kind) list += (list.empty() ? "" : ", ") + std::string(p.name);
+      if (p.kind == kind) append_name(list, p.name);
     }
     return list;
   }
@@ -184,7 +197,7 @@ class Reader {
         for (std::size_t i = 0; i < s_.scope.channel_count(); ++i) {
           const nc::ScopeChannelInfo& info = s_.scope.channel(i);
           if (info.axis_name == s_.axes[a].name || info.name.rfind(s_.axes[a].name + ".", 0) == 0) {
-            list += (list.empty() ? "" : ", ") + info.name.substr(s_.axes[a].name.size() + 1);
+            append_name(list, info.name.substr(s_.axes[a].name.size() + 1));
           }
         }
         bad(pointer + "/field", "unknown axis field '" + field + "' (fields: " + list + ")");
@@ -254,7 +267,7 @@ void read_action(Reader& r, Scenario::Impl& s, const json& a, const std::string&
       if (type == nullptr) {
         std::string list;
         for (const BlockType& t : block_types())
-          list += (list.empty() ? "" : ", ") + std::string(t.name);
+          append_name(list, t.name);
         r.bad(p + "/type", "unknown block type '" + type_name + "' (types: " + list + ")");
       }
       if (it != s.blocks.end()) r.bad(p + "/type", "block '" + name + "' was declared before");
@@ -268,8 +281,10 @@ void read_action(Reader& r, Scenario::Impl& s, const json& a, const std::string&
       std::vector<plc::AXIS_REF*> refs;
       for (const std::string_view key : type->axes) {
         const std::string k(key);
-        if (!a.contains(k)) r.bad(p + "/" + k, std::string(type->name) + " needs \"" + k + "\"");
-        refs.push_back(s.axes[r.axis(a[k], p + "/" + k)].ref);
+        std::string pointer = p + "/";
+        pointer += k;
+        if (!a.contains(k)) r.bad(pointer, std::string(type->name) + " needs \"" + k + "\"");
+        refs.push_back(s.axes[r.axis(a[k], pointer)].ref);
       }
       for (const char* key : {"axis", "master", "slave"}) {
         if (a.contains(key) &&
@@ -331,7 +346,7 @@ void read_action(Reader& r, Scenario::Impl& s, const json& a, const std::string&
         if (f == std::end(kPlcFields)) {
           std::string list;
           for (const FieldName& n : kPlcFields)
-            list += (list.empty() ? "" : ", ") + std::string(n.name);
+            append_name(list, n.name);
           r.bad(wp, "unknown PlcToNc field '" + item.key() + "' (fields: " + list + ")");
         }
         double v = 0.0;
@@ -482,22 +497,14 @@ void read_plots(Reader& r, Scenario::Impl& s, const json& plots) {
       if (other.name == plot.name) r.bad(p + "/name", "duplicate plot name");
     }
     if (plots[i].contains("title")) plot.title = r.text(plots[i]["title"], p + "/title");
-    if (!plots[i].contains("panels") || !plots[i]["panels"].is_array() ||
-        plots[i]["panels"].empty()) {
-      r.bad(p + "/panels", "required: a non-empty array");
-    }
-    const json& panels = plots[i]["panels"];
+    const json& panels = r.items(plots[i], "panels", p + "/panels");
     for (std::size_t k = 0; k < panels.size(); ++k) {
       const std::string pp = p + "/panels/" + std::to_string(k);
       r.keys(panels[k], pp, {"title", "unit", "series"});
       PlotPanelSpec panel;
       if (panels[k].contains("title")) panel.title = r.text(panels[k]["title"], pp + "/title");
       if (panels[k].contains("unit")) panel.unit = r.text(panels[k]["unit"], pp + "/unit");
-      if (!panels[k].contains("series") || !panels[k]["series"].is_array() ||
-          panels[k]["series"].empty()) {
-        r.bad(pp + "/series", "required: a non-empty array");
-      }
-      const json& series = panels[k]["series"];
+      const json& series = r.items(panels[k], "series", pp + "/series");
       for (std::size_t j = 0; j < series.size(); ++j) {
         const std::string sp = pp + "/series/" + std::to_string(j);
         r.keys(series[j], sp,
