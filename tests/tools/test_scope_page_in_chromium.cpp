@@ -121,6 +121,11 @@ TEST_CASE("the scope page renders, zooms, reads the cursor as trace.csv and hide
   CHECK(state["cursor"]["values"]["Axis.SetVelo"] == 2000.0);
   CHECK(state["cursor"]["values"]["Axis.SetAcc"] == 0.0);
 
+  // Pan by half the view (the Pan buttons move a quarter).
+  const nlohmann::json panned = page_state("zoom=0.5,1.0&pan=0.5");
+  CHECK(std::fabs(panned["view"][0].get<double>() - 0.75) < 3.0 * pixel);
+  CHECK(std::fabs(panned["view"][1].get<double>() - 1.25) < 3.0 * pixel);
+
   // Reset view: without a hash the page shows the whole run and no cursor.
   const nlohmann::json initial = page_state("");
   CHECK(initial["view"][0] == time.front());

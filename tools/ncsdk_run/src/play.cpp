@@ -68,7 +68,7 @@ void write_field(plc::PLCTONC_AXIS_REF& out, PlcField field, double v) noexcept 
 
 // Remembers a code the first time it shows (bounded: a run shows a handful of errors).
 void note(std::vector<std::pair<uint32_t, double>>& seen, uint32_t code, double t) {
-  if (code == 0 || seen.size() >= 32) return;
+  if (code == 0 || seen.size() >= kMaxErrorsNoted) return;
   if (!seen.empty() && seen.back().first == code) return;
   for (const auto& s : seen) {
     if (s.first == code) return;

@@ -275,6 +275,7 @@ void read_action(Reader& r, Scenario::Impl& s, const json& a, const std::string&
         r.bad(p + "/block", "a block name is not empty and has no . , \" or line break");
       }
       BlockSlot slot;
+      slot.errors.reserve(kMaxErrorsNoted);
       slot.name = name;
       slot.type = type;
       slot.block = type->make();
@@ -573,6 +574,7 @@ Scenario::Scenario(const json& axes, const json& timeline, std::string axes_file
                        "a scenario's axis name has no . , \" or line break");
     }
     AxisSlot slot;
+    slot.errors.reserve(kMaxErrorsNoted);  // the cycle only copies numbers
     slot.name = config.name;
     slot.ref = &s.kernel.add_axis(config);
     s.scope.add_signal(*slot.ref, slot.name, nc::Signal::kSetPos);

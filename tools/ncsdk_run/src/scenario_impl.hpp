@@ -20,6 +20,8 @@
 namespace scenario {
 
 inline constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+// Distinct error codes noted per axis or block (storage reserved at set-up).
+inline constexpr std::size_t kMaxErrorsNoted = 32;
 
 struct AxisSlot {
   std::string name;
