@@ -52,7 +52,8 @@ Profile finish(const KinematicState& start, double target, double dir, const Pie
   const KinematicState end{target, 0.0, 0.0};
   profile.close(&end);
   profile.anchor_to_end(tail_start);
-  if (!detail::profile_finite(profile)) return Profile::failure(ErrorCode::kPlannerNoSolution);
+  // One returned object (no copy of the profile on return).
+  if (!detail::profile_finite(profile)) profile = Profile::failure(ErrorCode::kPlannerNoSolution);
   return profile;
 }
 

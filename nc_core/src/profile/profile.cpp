@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "profile/kinematics.hpp"
 
@@ -15,6 +16,22 @@ Profile Profile::failure(ErrorCode code) noexcept {
   return profile;
 }
 
+void Profile::copy_from(const Profile& other) noexcept {
+  // Only [0, count_) is ever read; the rest of the storage stays as it is.
+  if (other.count_ > 0) {
+    std::memcpy(static_cast<void*>(segments_.items), other.segments_.items,
+                other.count_ * sizeof(Segment));
+  }
+  count_ = other.count_;
+  duration_ = other.duration_;
+  start_ = other.start_;
+  final_ = other.final_;
+  end_ = other.end_;
+  error_ = other.error_;
+  holds_velocity_ = other.holds_velocity_;
+  cursor_ = other.cursor_;
+}
+
 void Profile::reset(const KinematicState& start) noexcept {
   count_ = 0;
   duration_ = 0.0;
@@ -23,6 +40,7 @@ void Profile::reset(const KinematicState& start) noexcept {
   final_ = start;
   error_ = ErrorCode::kNone;
   holds_velocity_ = false;
+  cursor_ = 0;
 }
 
 bool Profile::append(double duration, double jerk) noexcept {
@@ -64,15 +82,28 @@ void Profile::anchor_to_end(std::size_t first) noexcept {
   }
 }
 
+std::size_t Profile::find_segment(double t) const noexcept {
+  // The last segment with t0 <= t (the first when none is): from the previous call's segment
+  // forwards or backwards, which finds the same one as a scan from either end.
+  std::size_t i = cursor_ < count_ ? cursor_ : count_ - 1;
+  if (segments_.items[i].t0 <= t) {
+    while (i + 1 < count_ && segments_.items[i + 1].t0 <= t)
+      ++i;
+  } else {
+    while (i > 0 && segments_.items[i].t0 > t)
+      --i;
+  }
+  cursor_ = i;
+  return i;
+}
+
 KinematicState Profile::at(double t) const noexcept {
   if (t >= duration_) {
     if (!holds_velocity_) return final_;
     return KinematicState{final_.p + final_.v * (t - duration_), final_.v, 0.0};
   }
   if (!(t > 0.0)) return start_;
-  std::size_t i = count_ - 1;
-  while (i > 0 && segments_.items[i].t0 > t)
-    --i;
+  const std::size_t i = find_segment(t);
   const Segment& seg = segments_.items[i];
   const double tau = t - seg.t0;
   if (tau <= 0.5 * seg.duration) {
@@ -92,10 +123,8 @@ KinematicState Profile::at(double t) const noexcept {
 
 double Profile::jerk_at(double t) const noexcept {
   if (count_ == 0 || t < 0.0 || t >= duration_) return 0.0;
-  std::size_t i = count_ - 1;
-  while (i > 0 && segments_.items[i].t0 > t)
-    --i;
-  return segments_.items[i].j;
+  if (std::isnan(t)) return segments_.items[count_ - 1].j;  // as a scan from the end finds
+  return segments_.items[find_segment(t)].j;
 }
 
 }  // namespace nc

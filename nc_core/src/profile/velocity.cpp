@@ -12,14 +12,18 @@ Profile build_change(const KinematicState& start, double v1, const detail::Bound
                      bool holds) noexcept {
   detail::Piece pieces[detail::kMaxChangePieces];
   const int n = detail::velocity_change(start.v, start.a, v1, bounds, pieces);
-  if (n < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
+  // One returned object (no copy of the profile on return).
   Profile profile;
+  if (n < 0) {
+    profile = Profile::failure(ErrorCode::kPlannerNoSolution);
+    return profile;
+  }
   profile.reset(start);
   for (int i = 0; i < n; ++i)
     profile.append(pieces[i].t, pieces[i].j, pieces[i].a_end, pieces[i].v_end);
   const KinematicState end{profile.end_state().p, v1, 0.0};
   profile.close(&end, holds);
-  if (!detail::profile_finite(profile)) return Profile::failure(ErrorCode::kPlannerNoSolution);
+  if (!detail::profile_finite(profile)) profile = Profile::failure(ErrorCode::kPlannerNoSolution);
   return profile;
 }
 
