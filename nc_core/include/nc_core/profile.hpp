@@ -21,6 +21,10 @@ namespace nc {
 
 using ErrorCode = plc::ErrorCode;
 
+namespace detail {
+class ProfileWriter;  // the planners' inline builder (nc_core/src/profile/profile_writer.hpp)
+}  // namespace detail
+
 struct KinematicState {
   double p = 0.0;
   double v = 0.0;
@@ -98,6 +102,7 @@ class Profile {
   KinematicState end_state() const noexcept { return end_; }
 
  private:
+  friend class detail::ProfileWriter;
   void copy_from(const Profile& other) noexcept;
   // The segment holding t (0 < t < duration()): the last one with t0 <= t.
   std::size_t find_segment(double t) const noexcept;

@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "profile/kinematics.hpp"
+#include "profile/profile_writer.hpp"
 
 namespace nc {
 
@@ -33,14 +34,7 @@ void Profile::copy_from(const Profile& other) noexcept {
 }
 
 void Profile::reset(const KinematicState& start) noexcept {
-  count_ = 0;
-  duration_ = 0.0;
-  start_ = start;
-  end_ = start;
-  final_ = start;
-  error_ = ErrorCode::kNone;
-  holds_velocity_ = false;
-  cursor_ = 0;
+  detail::ProfileWriter(*this, start).close(nullptr, false);
 }
 
 bool Profile::append(double duration, double jerk) noexcept {
@@ -48,20 +42,14 @@ bool Profile::append(double duration, double jerk) noexcept {
 }
 
 bool Profile::append(double duration, double jerk, double exact_a, double exact_v) noexcept {
-  if (!(duration > 0.0)) return true;
-  if (count_ == kMaxSegments) return false;
-  // Whole-object assignment: begins the element's lifetime in the uncleared storage.
-  segments_.items[count_++] = Segment{duration_, duration, end_.p, end_.v, end_.a, jerk};
-  end_ = detail::advance(end_, jerk, duration);
-  if (!std::isnan(exact_a)) end_.a = exact_a;
-  if (!std::isnan(exact_v)) end_.v = exact_v;
-  duration_ += duration;
-  return true;
+  detail::ProfileWriter writer(*this);
+  const bool ok = writer.append(duration, jerk, exact_a, exact_v);
+  writer.store();
+  return ok;
 }
 
 void Profile::close(const KinematicState* exact_end, bool holds_velocity) noexcept {
-  final_ = exact_end != nullptr ? *exact_end : end_;
-  holds_velocity_ = holds_velocity;
+  detail::ProfileWriter(*this).close(exact_end, holds_velocity);
 }
 
 void Profile::anchor_to_end(std::size_t first) noexcept {

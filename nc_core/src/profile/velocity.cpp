@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "nc_core/profile.hpp"
+#include "profile/profile_writer.hpp"
 #include "profile/validate.hpp"
 #include "profile/velocity_change.hpp"
 
@@ -10,7 +11,8 @@ namespace {
 
 Profile build_change(const KinematicState& start, double v1, const detail::Bounds& bounds,
                      bool holds) noexcept {
-  detail::Piece pieces[detail::kMaxChangePieces];
+  detail::PieceBuffer<detail::kMaxChangePieces> pieces_room;
+  detail::Piece* pieces = pieces_room.items;
   const int n = detail::velocity_change(start.v, start.a, v1, bounds, pieces);
   // One returned object (no copy of the profile on return).
   Profile profile;
@@ -18,11 +20,11 @@ Profile build_change(const KinematicState& start, double v1, const detail::Bound
     profile = Profile::failure(ErrorCode::kPlannerNoSolution);
     return profile;
   }
-  profile.reset(start);
+  detail::ProfileWriter writer(profile, start);
   for (int i = 0; i < n; ++i)
-    profile.append(pieces[i].t, pieces[i].j, pieces[i].a_end, pieces[i].v_end);
-  const KinematicState end{profile.end_state().p, v1, 0.0};
-  profile.close(&end, holds);
+    writer.append(pieces[i].t, pieces[i].j, pieces[i].a_end, pieces[i].v_end);
+  const KinematicState end{writer.end_state().p, v1, 0.0};
+  writer.close(&end, holds);
   if (!detail::profile_finite(profile)) profile = Profile::failure(ErrorCode::kPlannerNoSolution);
   return profile;
 }
