@@ -25,7 +25,7 @@ struct Piece {
 // it; clearing the room costs as much as a short plan's arithmetic).
 template <int N>
 struct PieceBuffer {
-  PieceBuffer() noexcept {}  // NOLINT(modernize-use-equals-default): must not initialise
+  PieceBuffer() noexcept {}  // user-provided: leaves the pieces unwritten
   union {
     Piece items[N];
   };

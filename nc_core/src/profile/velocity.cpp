@@ -11,18 +11,13 @@ namespace {
 
 Profile build_change(const KinematicState& start, double v1, const detail::Bounds& bounds,
                      bool holds) noexcept {
-  detail::PieceBuffer<detail::kMaxChangePieces> pieces_room;
-  detail::Piece* pieces = pieces_room.items;
-  const int n = detail::velocity_change(start.v, start.a, v1, bounds, pieces);
   // One returned object (no copy of the profile on return).
   Profile profile;
-  if (n < 0) {
+  detail::ProfileWriter writer(profile, start);
+  if (detail::velocity_change(start.v, start.a, v1, bounds, writer) < 0) {
     profile = Profile::failure(ErrorCode::kPlannerNoSolution);
     return profile;
   }
-  detail::ProfileWriter writer(profile, start);
-  for (int i = 0; i < n; ++i)
-    writer.append(pieces[i].t, pieces[i].j, pieces[i].a_end, pieces[i].v_end);
   const KinematicState end{writer.end_state().p, v1, 0.0};
   writer.close(&end, holds);
   if (!detail::profile_finite(profile)) profile = Profile::failure(ErrorCode::kPlannerNoSolution);
