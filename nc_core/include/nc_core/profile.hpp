@@ -104,7 +104,7 @@ class Profile {
  private:
   friend class detail::ProfileWriter;
   void copy_from(const Profile& other) noexcept;
-  // The segment holding t (0 < t < duration()): the last one with t0 <= t.
+  // The segment holding t (0 <= t < duration()): the last one with t0 <= t.
   std::size_t find_segment(double t) const noexcept;
 
   // Storage that is not cleared on construction (planning would pay for clearing the whole
