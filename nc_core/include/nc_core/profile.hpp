@@ -21,6 +21,10 @@ namespace nc {
 
 using ErrorCode = plc::ErrorCode;
 
+namespace detail {
+class ProfileWriter;  // the planners' inline builder (nc_core/src/profile/profile_writer.hpp)
+}  // namespace detail
+
 struct KinematicState {
   double p = 0.0;
   double v = 0.0;
@@ -44,12 +48,19 @@ struct Segment {
   double j = 0.0;
 };
 
-// A fixed-capacity sequence of constant-jerk segments starting at t = 0.
+// A fixed-capacity sequence of constant-jerk segments starting at t = 0. Copies move only the
+// segments in use (a velocity change has at most a handful of the capacity).
 class Profile {
  public:
   static constexpr std::size_t kMaxSegments = 24;
 
   Profile() = default;
+  Profile(const Profile& other) noexcept { copy_from(other); }
+  Profile& operator=(const Profile& other) noexcept {
+    if (this != &other) copy_from(other);
+    return *this;
+  }
+  ~Profile() = default;
   static Profile failure(ErrorCode code) noexcept;
 
   bool ok() const noexcept { return error_ == ErrorCode::kNone; }
@@ -60,6 +71,9 @@ class Profile {
   // velocity profile, see holds_velocity()). Exact at segment boundaries: each segment stores its
   // start state, its first half is evaluated forward from it and its second half back from the
   // next segment's start (or the exact final state), so at(T - tiny) approaches the target.
+  // at() and jerk_at() go on from the segment of the previous call (O(1) when sampled cycle by
+  // cycle; any order of t gives the same results): const, but not for concurrent calls on one
+  // Profile.
   KinematicState at(double t) const noexcept;
   double jerk_at(double t) const noexcept;
   KinematicState start_state() const noexcept { return start_; }
@@ -88,6 +102,11 @@ class Profile {
   KinematicState end_state() const noexcept { return end_; }
 
  private:
+  friend class detail::ProfileWriter;
+  void copy_from(const Profile& other) noexcept;
+  // The segment holding t (0 <= t < duration()): the last one with t0 <= t.
+  std::size_t find_segment(double t) const noexcept;
+
   // Storage that is not cleared on construction (planning would pay for clearing the whole
   // fixed capacity): only [0, count_) is ever written before it is read.
   union Storage {
@@ -102,6 +121,7 @@ class Profile {
   KinematicState end_{};
   ErrorCode error_ = ErrorCode::kNone;
   bool holds_velocity_ = false;
+  mutable std::size_t cursor_ = 0;  // the segment of the last at() / jerk_at()
 };
 
 // From any state to rest at `target` in the least time. Start states outside the limits are

@@ -21,6 +21,16 @@ struct Piece {
   double v_end = NAN;  // exact velocity at the end where known (else NaN)
 };
 
+// Room for N pieces, not filled on construction (a planner writes each piece before reading
+// it; clearing the room costs as much as a short plan's arithmetic).
+template <int N>
+struct PieceBuffer {
+  PieceBuffer() noexcept {}  // user-provided: leaves the pieces unwritten
+  union {
+    Piece items[N];
+  };
+};
+
 // The acceleration limits of a plan (path-relative, seed 000 §2.1) and the jerk.
 struct Bounds {
   double ap = 0.0;  // A+: bound on |a| while |v| grows

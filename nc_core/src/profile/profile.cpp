@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "profile/kinematics.hpp"
+#include "profile/profile_writer.hpp"
 
 namespace nc {
 
@@ -15,14 +17,24 @@ Profile Profile::failure(ErrorCode code) noexcept {
   return profile;
 }
 
+void Profile::copy_from(const Profile& other) noexcept {
+  // Only [0, count_) is ever read; the rest of the storage stays as it is.
+  if (other.count_ > 0) {
+    std::memcpy(static_cast<void*>(segments_.items), other.segments_.items,
+                other.count_ * sizeof(Segment));
+  }
+  count_ = other.count_;
+  duration_ = other.duration_;
+  start_ = other.start_;
+  final_ = other.final_;
+  end_ = other.end_;
+  error_ = other.error_;
+  holds_velocity_ = other.holds_velocity_;
+  cursor_ = other.cursor_;
+}
+
 void Profile::reset(const KinematicState& start) noexcept {
-  count_ = 0;
-  duration_ = 0.0;
-  start_ = start;
-  end_ = start;
-  final_ = start;
-  error_ = ErrorCode::kNone;
-  holds_velocity_ = false;
+  detail::ProfileWriter(*this, start).close(nullptr, false);
 }
 
 bool Profile::append(double duration, double jerk) noexcept {
@@ -30,20 +42,14 @@ bool Profile::append(double duration, double jerk) noexcept {
 }
 
 bool Profile::append(double duration, double jerk, double exact_a, double exact_v) noexcept {
-  if (!(duration > 0.0)) return true;
-  if (count_ == kMaxSegments) return false;
-  // Whole-object assignment: begins the element's lifetime in the uncleared storage.
-  segments_.items[count_++] = Segment{duration_, duration, end_.p, end_.v, end_.a, jerk};
-  end_ = detail::advance(end_, jerk, duration);
-  if (!std::isnan(exact_a)) end_.a = exact_a;
-  if (!std::isnan(exact_v)) end_.v = exact_v;
-  duration_ += duration;
-  return true;
+  detail::ProfileWriter writer(*this);
+  const bool ok = writer.append(duration, jerk, exact_a, exact_v);
+  writer.store();
+  return ok;
 }
 
 void Profile::close(const KinematicState* exact_end, bool holds_velocity) noexcept {
-  final_ = exact_end != nullptr ? *exact_end : end_;
-  holds_velocity_ = holds_velocity;
+  detail::ProfileWriter(*this).close(exact_end, holds_velocity);
 }
 
 void Profile::anchor_to_end(std::size_t first) noexcept {
@@ -64,15 +70,28 @@ void Profile::anchor_to_end(std::size_t first) noexcept {
   }
 }
 
+std::size_t Profile::find_segment(double t) const noexcept {
+  // The last segment with t0 <= t (the first when none is): from the previous call's segment
+  // forwards or backwards, which finds the same one as a scan from either end.
+  std::size_t i = cursor_ < count_ ? cursor_ : count_ - 1;
+  if (segments_.items[i].t0 <= t) {
+    while (i + 1 < count_ && segments_.items[i + 1].t0 <= t)
+      ++i;
+  } else {
+    while (i > 0 && segments_.items[i].t0 > t)
+      --i;
+  }
+  cursor_ = i;
+  return i;
+}
+
 KinematicState Profile::at(double t) const noexcept {
   if (t >= duration_) {
     if (!holds_velocity_) return final_;
     return KinematicState{final_.p + final_.v * (t - duration_), final_.v, 0.0};
   }
   if (!(t > 0.0)) return start_;
-  std::size_t i = count_ - 1;
-  while (i > 0 && segments_.items[i].t0 > t)
-    --i;
+  const std::size_t i = find_segment(t);
   const Segment& seg = segments_.items[i];
   const double tau = t - seg.t0;
   if (tau <= 0.5 * seg.duration) {
@@ -92,10 +111,8 @@ KinematicState Profile::at(double t) const noexcept {
 
 double Profile::jerk_at(double t) const noexcept {
   if (count_ == 0 || t < 0.0 || t >= duration_) return 0.0;
-  std::size_t i = count_ - 1;
-  while (i > 0 && segments_.items[i].t0 > t)
-    --i;
-  return segments_.items[i].j;
+  if (std::isnan(t)) return segments_.items[count_ - 1].j;  // as a scan from the end finds
+  return segments_.items[find_segment(t)].j;
 }
 
 }  // namespace nc

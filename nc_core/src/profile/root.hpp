@@ -9,8 +9,11 @@ namespace nc::detail {
 // A second-order root finder safeguarded by the bracket [lo, hi] (f(lo) < 0 < f(hi), f
 // increasing), from x: `fd(x)` returns f, f', f'' and the rounding level of f (a RootPoint). Each
 // step solves the local quadratic model (exact for the quadratic pieces of the stop point, fast
-// where Newton crawls on strongly curved pieces); steps leaving the bracket become bisections.
-// Ends when |f| is at its rounding level or the bracket is a few ulp wide.
+// where Newton crawls on strongly curved pieces). Where that model misleads (its step leaves the
+// bracket, or |f| fell by less than 8x), f - f(lo) is taken as a power of x - lo, with the
+// exponent read from f' (exact for c (x - lo)^n: the stop point grows like that from a piece's
+// start, with n up to 4 from rest); bisection is the last resort. `f_lo` = f(lo) < 0. Ends when
+// |f| is at its rounding level or the bracket is a few ulp wide.
 struct RootPoint {
   double f = 0.0;
   double df = 0.0;
@@ -19,8 +22,10 @@ struct RootPoint {
 };
 
 template <class FD>
-double find_root_quadratic(FD&& fd, double lo, double hi, double x) noexcept {
+double find_root_quadratic(FD&& fd, double lo, double hi, double x, double f_lo) noexcept {
+  const double origin = lo;
   double last_step = 0.0;  // the previous model step (its model predicted f = 0 here)
+  double last_f = 0.0;
   for (int iter = 0; iter < 100; ++iter) {
     const RootPoint y = fd(x);
     if (std::abs(y.f) <= y.tol) return x;
@@ -39,9 +44,20 @@ double find_root_quadratic(FD&& fd, double lo, double hi, double x) noexcept {
       step = 0.5 * (lo + hi) - x;
     }
     double next = x + step;
-    if (!(next > lo && next < hi)) {
-      next = 0.5 * (lo + hi);
-      step = 0.0;
+    const bool slow = last_f != 0.0 && std::abs(y.f) > 0.125 * std::abs(last_f);
+    last_f = y.f;
+    if (!(next > lo && next < hi) || slow) {
+      // f - f_lo = c (x - origin)^n with n = (x - origin) f' / (f - f_lo): its root.
+      const double rise = y.f - f_lo;
+      const double n = (x - origin) * y.df / rise;
+      const double power =
+          rise > 0.0 && n > 0.0 ? origin + (x - origin) * std::pow(-f_lo / rise, 1.0 / n) : NAN;
+      if (power > lo && power < hi) {
+        next = power;
+      } else if (!(next > lo && next < hi)) {
+        next = 0.5 * (lo + hi);
+      }
+      step = 0.0;  // not a model step: the next result is checked
     } else if (last_step != 0.0) {
       // The model's error shrinks with the cube of the step: |f| now is what the last model
       // missed by, so the next miss is about |f| (step / last_step)^3. Below the tolerance the

@@ -2,7 +2,8 @@
 // function whose root plan_position finds. Same closed form as the stop's pieces
 // (velocity_change.cpp, stop_change), written once for plain numbers and once for jets (value,
 // first and second derivative), so that the root can be found with a second-order (Halley-type)
-// method.
+// method. The values are computed by the same operations in both (bit for bit); only the
+// derivatives use reciprocals, since they steer the root finder and never enter a profile.
 #pragma once
 
 #include <cmath>
@@ -30,19 +31,25 @@ inline Jet operator*(Jet a, Jet b) noexcept {
 inline Jet operator*(double a, Jet b) noexcept {
   return {a * b.x, a * b.d, a * b.dd};
 }
-inline Jet operator/(Jet a, double b) noexcept {
-  return {a.x / b, a.d / b, a.dd / b};
-}
 inline Jet operator/(Jet a, Jet b) noexcept {
   const double x = a.x / b.x;
-  const double d = (a.d - x * b.d) / b.x;
-  return {x, d, (a.dd - 2.0 * d * b.d - x * b.dd) / b.x};
+  const double inv = 1.0 / b.x;
+  const double d = (a.d - x * b.d) * inv;
+  return {x, d, (a.dd - 2.0 * d * b.d - x * b.dd) * inv};
 }
 inline Jet sqrt(Jet a) noexcept {
   const double r = std::sqrt(a.x);
   if (!(r > 0.0)) return {r, 0.0, 0.0};
-  const double d = 0.5 * a.d / r;
-  return {r, d, (0.5 * a.dd - d * d) / r};
+  const double inv = 1.0 / r;
+  const double d = 0.5 * a.d * inv;
+  return {r, d, (0.5 * a.dd - d * d) * inv};
+}
+// a / b where 1 / b is known: the value divided (as the pieces compute it), derivatives scaled.
+inline double over(double a, double b, double) noexcept {
+  return a / b;
+}
+inline Jet over(Jet a, double b, double inv_b) noexcept {
+  return {a.x / b, a.d * inv_b, a.dd * inv_b};
 }
 inline double value(Jet a) noexcept {
   return a.x;
@@ -59,11 +66,35 @@ inline double constant(double, double c) noexcept {
 
 inline constexpr double kStopRel = kDecisionTolerance;
 
+// The constants of the shortest stop under one pair (A-, J), computed once per plan by the same
+// operations the stop's closed form uses, so that caching them changes no bit.
+struct StopBounds {
+  explicit StopBounds(const Bounds& b) noexcept
+      : am(b.am),
+        jerk(b.j),
+        inv_jerk(1.0 / b.j),
+        inv_am(1.0 / b.am),
+        jerk6(b.j / 6.0),
+        am_limit(b.am * (1.0 + kStopRel)),
+        v_curve(-b.am * b.am / (2.0 * b.j)),
+        t3(b.am / b.j),
+        tail(t3 * (0.5 * b.am - (b.j / 6.0) * t3)) {}
+  double am;
+  double jerk;
+  double inv_jerk;
+  double inv_am;
+  double jerk6;     // J / 6
+  double am_limit;  // A- (1 + kStopRel): above it a is first brought back to A-
+  double v_curve;   // -A-^2 / 2J: start velocity of the final ramp from A-
+  double t3;        // A- / J: length of that ramp
+  double tail;      // its distance beyond its start velocity's share: t3 (A-/2 - J t3 / 6)
+};
+
 // Distance of the shortest stop from (v, a) (stop_change's pieces, integrated).
 template <class T>
-T stop_distance_of(T v, T a, const Bounds& b) noexcept {
+T stop_distance_of(T v, T a, const StopBounds& b) noexcept {
   using std::sqrt;
-  const double jerk = b.j;
+  const double jerk = b.jerk;
   const double am = b.am;
   const double s = natural_velocity(value(v), value(a), jerk) > 0.0 ? -1.0 : 1.0;
   v = s * v;
@@ -71,41 +102,40 @@ T stop_distance_of(T v, T a, const Bounds& b) noexcept {
   const double av = value(a), vv = value(v);
   const double k_tol = kStopRel * (av * av + 2.0 * jerk * std::abs(vv));
   T p = constant(v, 0.0);
-  if (av > am * (1.0 + kStopRel)) {
-    const T t = (a - constant(a, am)) / jerk;
-    p = t * (v + t * (0.5 * a - (jerk / 6.0) * t));
+  if (av > b.am_limit) {
+    const T t = over(a - constant(a, am), jerk, b.inv_jerk);
+    p = t * (v + t * (0.5 * a - b.jerk6 * t));
     v = v + t * (a - (0.5 * jerk) * t);
   } else {
     const T meet2 = 0.5 * (a * a - (2.0 * jerk) * v);
     if (value(meet2) <= k_tol) {
       // stop_change's landing ramp: t = -2v/a with the adjusted jerk covers t v / 3.
       if (av < 0.0 && vv > 0.0) return s * ((-2.0 / 3.0) * (v * v / a));
-      const T t = constant(a, 0.0) - a / jerk;
-      return s * (t * (v + t * (0.5 * a + (jerk / 6.0) * t)));
+      const T t = constant(a, 0.0) - over(a, jerk, b.inv_jerk);
+      return s * (t * (v + t * (0.5 * a + b.jerk6 * t)));
     }
     const T a_meet = sqrt(meet2);
     if (value(a_meet) <= am) {
-      const T t1 = (a_meet - a) / jerk;
+      const T t1 = over(a_meet - a, jerk, b.inv_jerk);
       if (value(t1) > 0.0) {
-        p = t1 * (v + t1 * (0.5 * a + (jerk / 6.0) * t1));
+        p = t1 * (v + t1 * (0.5 * a + b.jerk6 * t1));
         v = v + t1 * (a + (0.5 * jerk) * t1);
       }
-      const T t2 = a_meet / jerk;
-      return s * (p + t2 * (v + t2 * (0.5 * a_meet - (jerk / 6.0) * t2)));
+      const T t2 = over(a_meet, jerk, b.inv_jerk);
+      return s * (p + t2 * (v + t2 * (0.5 * a_meet - b.jerk6 * t2)));
     }
-    const T t = (constant(a, am) - a) / jerk;
+    const T t = over(constant(a, am) - a, jerk, b.inv_jerk);
     if (value(t) > 0.0) {
-      p = t * (v + t * (0.5 * a + (jerk / 6.0) * t));
+      p = t * (v + t * (0.5 * a + b.jerk6 * t));
       v = v + t * (a + (0.5 * jerk) * t);
     }
   }
-  const T t_hold = (constant(v, -am * am / (2.0 * jerk)) - v) / am;
+  const T t_hold = over(constant(v, b.v_curve) - v, am, b.inv_am);
   if (value(t_hold) > 0.0) {
     p = p + t_hold * (v + (0.5 * am) * t_hold);
     v = v + am * t_hold;
   }
-  const double t3 = am / jerk;
-  return s * (p + t3 * (v + constant(v, t3 * (0.5 * am - (jerk / 6.0) * t3))));
+  return s * (p + b.t3 * (v + constant(v, b.tail)));
 }
 
 }  // namespace nc::detail

@@ -29,19 +29,16 @@ inline ErrorCode check_limits(const Limits& l) noexcept {
 }
 
 // The last line of defence against overflow with extreme (finite) inputs: a profile whose
-// numbers are not all finite is never handed out.
+// numbers are not all finite is never handed out. x * 0 is 0 for a finite x and NaN otherwise,
+// so one sum replaces a test per value.
 inline bool profile_finite(const Profile& profile) noexcept {
-  if (!std::isfinite(profile.duration())) return false;
   const KinematicState f = profile.final_state();
-  if (!std::isfinite(f.p) || !std::isfinite(f.v) || !std::isfinite(f.a)) return false;
+  double zero = profile.duration() * 0.0 + f.p * 0.0 + f.v * 0.0 + f.a * 0.0;
   for (std::size_t i = 0; i < profile.segment_count(); ++i) {
     const Segment& s = profile.segment(i);
-    if (!std::isfinite(s.p) || !std::isfinite(s.v) || !std::isfinite(s.a) ||
-        !std::isfinite(s.duration)) {
-      return false;
-    }
+    zero += (s.p * 0.0 + s.v * 0.0) + (s.a * 0.0 + s.duration * 0.0);
   }
-  return true;
+  return zero == 0.0;
 }
 
 }  // namespace nc::detail

@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "nc_core/profile.hpp"
+#include "profile/profile_writer.hpp"
 #include "profile/validate.hpp"
 #include "profile/velocity_change.hpp"
 
@@ -10,16 +11,16 @@ namespace {
 
 Profile build_change(const KinematicState& start, double v1, const detail::Bounds& bounds,
                      bool holds) noexcept {
-  detail::Piece pieces[detail::kMaxChangePieces];
-  const int n = detail::velocity_change(start.v, start.a, v1, bounds, pieces);
-  if (n < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
+  // One returned object (no copy of the profile on return).
   Profile profile;
-  profile.reset(start);
-  for (int i = 0; i < n; ++i)
-    profile.append(pieces[i].t, pieces[i].j, pieces[i].a_end, pieces[i].v_end);
-  const KinematicState end{profile.end_state().p, v1, 0.0};
-  profile.close(&end, holds);
-  if (!detail::profile_finite(profile)) return Profile::failure(ErrorCode::kPlannerNoSolution);
+  detail::ProfileWriter writer(profile, start);
+  if (detail::velocity_change(start.v, start.a, v1, bounds, writer) < 0) {
+    profile = Profile::failure(ErrorCode::kPlannerNoSolution);
+    return profile;
+  }
+  const KinematicState end{writer.end_state().p, v1, 0.0};
+  writer.close(&end, holds);
+  if (!detail::profile_finite(profile)) profile = Profile::failure(ErrorCode::kPlannerNoSolution);
   return profile;
 }
 

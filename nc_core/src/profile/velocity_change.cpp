@@ -19,7 +19,10 @@ namespace {
 
 constexpr double kRel = kDecisionTolerance;
 
-int upward(double v, double a, double v1, const Bounds& b, Piece* out) noexcept {
+// The pieces are written mirrored by `sign` (-1 for a downward change walked as its mirror image;
+// multiplying by +-1 is exact).
+template <class Sink>
+int upward(double v, double a, double v1, const Bounds& b, double sign, Sink& out) noexcept {
   const double jerk = b.j;
   const double kf = 2.0 * jerk * v1;
   const bool cross = v1 > 0.0;
@@ -31,7 +34,10 @@ int upward(double v, double a, double v1, const Bounds& b, Piece* out) noexcept 
   int n = 0;
   // Appends a piece and moves the walk's state to its (exactly known) end.
   auto put = [&](double t, double j, double a_end, double v_end, bool v_exact) {
-    if (t > 0.0) out[n++] = Piece{t, j, a_end, v_exact ? v_end : NAN};
+    if (t > 0.0) {
+      out.put(Piece{t, sign * j, sign * a_end, v_exact ? sign * v_end : NAN});
+      ++n;
+    }
     a = a_end;
     v = v_end;
   };
@@ -138,7 +144,8 @@ int upward(double v, double a, double v1, const Bounds& b, Piece* out) noexcept 
 // The stop (v1 = 0) in closed form: no bound changes at v = 0 matter (a stop never crosses
 // v = 0 with a towards the bound that grows), so it is rise / hold at A- / fall, after bringing a
 // back under A- if needed. The hot path of plan_position's root finding.
-int stop_change(double v, double a, const Bounds& b, Piece* out) noexcept {
+template <class Sink>
+int stop_change(double v, double a, const Bounds& b, Sink& out) noexcept {
   const double jerk = b.j;
   const double am = b.am;
   const double s = natural_velocity(v, a, jerk) > 0.0 ? -1.0 : 1.0;  // mirror to an upward stop
@@ -147,7 +154,10 @@ int stop_change(double v, double a, const Bounds& b, Piece* out) noexcept {
   const double k_tol = kRel * (a * a + 2.0 * jerk * std::abs(v));
   int n = 0;
   auto put = [&](double t, double j, double a_end, double v_end) {
-    if (t > 0.0) out[n++] = Piece{t, s * j, s * a_end, s * v_end};
+    if (t > 0.0) {
+      out.put(Piece{t, s * j, s * a_end, s * v_end});
+      ++n;
+    }
   };
   if (a > am * (1.0 + kRel)) {
     const double t = (a - am) / jerk;
@@ -189,18 +199,36 @@ int stop_change(double v, double a, const Bounds& b, Piece* out) noexcept {
   return n;
 }
 
+template <class Sink>
+int change(double v0, double a0, double v1, const Bounds& bounds, Sink& out) noexcept {
+  if (v1 == 0.0) return stop_change(v0, a0, bounds, out);
+  if (v1 >= natural_velocity(v0, a0, bounds.j)) return upward(v0, a0, v1, bounds, 1.0, out);
+  return upward(-v0, -a0, -v1, bounds, -1.0, out);
+}
+
+// Where the pieces go: an array, or straight into a profile.
+struct ArraySink {
+  Piece* out;
+  void put(const Piece& piece) noexcept { *out++ = piece; }
+};
+struct WriterSink {
+  ProfileWriter& writer;
+  void put(const Piece& piece) noexcept {
+    writer.append(piece.t, piece.j, piece.a_end, piece.v_end);
+  }
+};
+
 }  // namespace
 
 int velocity_change(double v0, double a0, double v1, const Bounds& bounds, Piece* out) noexcept {
-  if (v1 == 0.0) return stop_change(v0, a0, bounds, out);
-  if (v1 >= natural_velocity(v0, a0, bounds.j)) return upward(v0, a0, v1, bounds, out);
-  const int n = upward(-v0, -a0, -v1, bounds, out);
-  for (int i = 0; i < n; ++i) {
-    out[i].j = -out[i].j;
-    out[i].a_end = -out[i].a_end;
-    out[i].v_end = -out[i].v_end;
-  }
-  return n;
+  ArraySink sink{out};
+  return change(v0, a0, v1, bounds, sink);
+}
+
+int velocity_change(double v0, double a0, double v1, const Bounds& bounds,
+                    ProfileWriter& writer) noexcept {
+  WriterSink sink{writer};
+  return change(v0, a0, v1, bounds, sink);
 }
 
 double pieces_distance(double v0, double a0, const Piece* pieces, int count) noexcept {

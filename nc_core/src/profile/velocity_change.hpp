@@ -4,6 +4,7 @@
 #pragma once
 
 #include "profile/kinematics.hpp"
+#include "profile/profile_writer.hpp"
 
 namespace nc::detail {
 
@@ -26,6 +27,9 @@ inline double natural_velocity(double v, double a, double jerk) noexcept {
 // bounds, the bound change at v = 0 and the final ramp allow. Start values outside the bounds are
 // brought back at maximum jerk; the end velocity is never over- or undershot.
 int velocity_change(double v0, double a0, double v1, const Bounds& bounds, Piece* out) noexcept;
+// The same pieces appended straight to a profile under construction.
+int velocity_change(double v0, double a0, double v1, const Bounds& bounds,
+                    ProfileWriter& writer) noexcept;
 
 // Distance travelled along `pieces` from velocity v0 and acceleration a0.
 double pieces_distance(double v0, double a0, const Piece* pieces, int count) noexcept;

@@ -1,0 +1,70 @@
+// The planners' direct access to the Profile they build (internal). Profile's builder functions
+// (reset, append, close) are written once here; a planner builds through a ProfileWriter, which
+// keeps the running end state in locals (registers) and stores the profile's fields at close.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+
+#include "nc_core/profile.hpp"
+#include "profile/kinematics.hpp"
+
+namespace nc::detail {
+
+class ProfileWriter {
+ public:
+  // Starts `profile` at `start` (Profile::reset).
+  ProfileWriter(Profile& profile, const KinematicState& start) noexcept
+      : profile_(profile), end_(start) {
+    profile.start_ = start;
+    profile.error_ = ErrorCode::kNone;
+    profile.cursor_ = 0;
+  }
+  // Continues a profile that Profile::append is building.
+  explicit ProfileWriter(Profile& profile) noexcept
+      : profile_(profile),
+        count_(profile.count_),
+        duration_(profile.duration_),
+        end_(profile.end_) {}
+
+  // Profile::append: exact_a / exact_v replace the integrated end values unless NaN.
+  bool append(double duration, double jerk, double exact_a, double exact_v) noexcept {
+    if (!(duration > 0.0)) return true;
+    if (count_ == Profile::kMaxSegments) return false;
+    // Whole-object assignment: begins the element's lifetime in the uncleared storage.
+    profile_.segments_.items[count_++] = Segment{duration_, duration, end_.p, end_.v, end_.a, jerk};
+    end_ = advance(end_, jerk, duration);
+    if (!std::isnan(exact_a)) end_.a = exact_a;
+    if (!std::isnan(exact_v)) end_.v = exact_v;
+    duration_ += duration;
+    return true;
+  }
+  // A piece mirrored by `dir` (+1 or -1).
+  bool append(const Piece& piece, double dir) noexcept {
+    return append(piece.t, dir * piece.j, dir * piece.a_end, dir * piece.v_end);
+  }
+
+  std::size_t count() const noexcept { return count_; }
+  const KinematicState& end_state() const noexcept { return end_; }
+
+  // Stores the running state into the profile (all Profile::append needs between calls).
+  void store() const noexcept {
+    profile_.count_ = count_;
+    profile_.duration_ = duration_;
+    profile_.end_ = end_;
+  }
+  // Profile::close: the final state is `exact_end` if given, else the integrated end.
+  void close(const KinematicState* exact_end, bool holds_velocity) const noexcept {
+    store();
+    profile_.final_ = exact_end != nullptr ? *exact_end : end_;
+    profile_.holds_velocity_ = holds_velocity;
+  }
+
+ private:
+  Profile& profile_;
+  std::size_t count_ = 0;
+  double duration_ = 0.0;
+  KinematicState end_;
+};
+
+}  // namespace nc::detail
