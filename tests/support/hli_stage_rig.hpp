@@ -29,12 +29,21 @@ struct Rig {
 
   // Axes with the given logical numbers (ax_nr), in this order; `setup` is the template.
   explicit Rig(std::initializer_list<int> ax_nrs, nc::hli::AxisSetup setup = {}) {
-    stage.reserve(ax_nrs.size());
+    std::vector<nc::hli::AxisSetup> setups;
     for (const int nr : ax_nrs) {
       setup.ax_nr = nr;
-      stage.add_axis(setup);
+      setups.push_back(setup);
     }
-    const std::size_t n = ax_nrs.size();
+    init(setups);
+  }
+  // Axes with their own set-up each.
+  explicit Rig(const std::vector<nc::hli::AxisSetup>& setups) { init(setups); }
+
+  void init(const std::vector<nc::hli::AxisSetup>& setups) {
+    stage.reserve(setups.size());
+    for (const nc::hli::AxisSetup& s : setups)
+      stage.add_axis(s);
+    const std::size_t n = setups.size();
     q.assign(n, 0.0);
     qv.assign(n, 0.0);
     qa.assign(n, 0.0);
