@@ -2,7 +2,6 @@
 // the list in force stays and nothing moves differently from a twin stage that never got it.
 #include <catch2/catch.hpp>
 
-#include <cstring>
 #include <vector>
 
 #include "hli_stage_rig.hpp"
@@ -38,7 +37,7 @@ struct Twins {
     const uint32_t code = tested.unit(target).state_r.error_r;
     CHECK_FALSE(tested.unit(target).command_w.semaphor_rw);
     CHECK(tested.unit(target).state_r.active_r == before.active_r);
-    CHECK(std::memcmp(&tested.unit(target).state_r.desc, &before.desc, sizeof before.desc) == 0);
+    CHECK(tested.unit(target).state_r.desc == before.desc);
     for (Rig* r : {&tested, &twin}) {
       r->move(0, 40.0, 400.0);
       r->move(2, -15.0, 400.0);

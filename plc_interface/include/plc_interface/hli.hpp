@@ -35,12 +35,16 @@ struct HLI_AX_COUPLING_DESC {
   uint16_t mode = HLI_AXIS_COUPLING_INACTIVE;
   int16_t fract_num = 0;    // FRACT only; 0 acts as ZERO
   int16_t fract_denom = 0;  // FRACT only; 0 is refused (70396)
+
+  bool operator==(const HLI_AX_COUPLING_DESC&) const = default;
 };
 
 // One coupling in force as the NC shows it.
 struct HLI_AX_COUPLING_STATE_DESC {
   int32_t ax_nr = 0;
   uint16_t mode = HLI_AXIS_COUPLING_INACTIVE;
+
+  bool operator==(const HLI_AX_COUPLING_STATE_DESC&) const = default;
 };
 
 struct HLI_AX_COUPLING_COMMAND {
