@@ -32,6 +32,14 @@ void check_exclusive(const fb::HLI_AxisCoupling& b) {
   CHECK((b.ErrorID != 0) == b.Error);
 }
 
+// Rising edge, one NC cycle, the call that sees the NC's answer.
+void trigger(fb::HLI_AxisCoupling& b, ScriptedHli& nc) {
+  b.Execute = true;
+  b(nc.unit);
+  nc.cycle();
+  b(nc.unit);
+}
+
 fb::HLI_AxisCoupling example_3() {
   fb::HLI_AxisCoupling b;
   b.desc[0] = {8, h::HLI_AXIS_COUPLING_DIRECT, 0, 0};
@@ -82,10 +90,7 @@ TEST_CASE("a refused list gives Error with the NC's 70xxx ID", "[hli][fb]") {
   ScriptedHli nc;
   nc.answer = 70397;
   fb::HLI_AxisCoupling b = example_3();
-  b.Execute = true;
-  b(nc.unit);
-  nc.cycle();
-  b(nc.unit);
+  trigger(b, nc);
   CHECK(b.Error);
   CHECK(b.ErrorID == 70397);
   check_exclusive(b);
@@ -94,10 +99,7 @@ TEST_CASE("a refused list gives Error with the NC's 70xxx ID", "[hli][fb]") {
   b(nc.unit);
   CHECK_FALSE(b.Error);
   nc.answer = 0;
-  b.Execute = true;
-  b(nc.unit);
-  nc.cycle();
-  b(nc.unit);
+  trigger(b, nc);
   CHECK(b.Done);
   CHECK(nc.evaluated == 2);
 }

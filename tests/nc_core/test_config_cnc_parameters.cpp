@@ -10,9 +10,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "config_error_of.hpp"
 #include "nc_core/cnc_parameters.hpp"
 #include "nc_core/config.hpp"
 
+using cfgtest::error_of;
 using nlohmann::json;
 
 namespace {
@@ -20,15 +22,6 @@ namespace {
 json axis_with(const json& cnc) {
   return json{{"axes", json::array({json{
                            {"name", "Y2"}, {"id", 8}, {"acceleration", 4000.0}, {"cnc", cnc}}})}};
-}
-
-std::optional<nc::ConfigError> error_of(const json& document) {
-  try {
-    (void)nc::parse_kernel_setup(document);
-  } catch (const nc::ConfigError& e) {
-    return e;
-  }
-  return std::nullopt;
 }
 
 }  // namespace

@@ -7,64 +7,46 @@
 #include <benchmark/benchmark.h>
 
 #include <cstddef>
-#include <memory>
 #include <vector>
 
-#include "hli/hli_stage.hpp"
+#include "hli_stage_rig.hpp"
 
 namespace {
 
 namespace h = plc::hli;
 
-struct Bench {
-  nc::hli::HliStage stage{0.001};
-  std::vector<double> q, qv, qa, d, dv, da;
-  std::unique_ptr<bool[]> referenced;
-  std::vector<plc::ErrorCode> stop;
-  std::size_t n;
-
-  explicit Bench(std::size_t axes) : n(axes) {
-    stage.reserve(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      nc::hli::AxisSetup s;
-      s.ax_nr = static_cast<int>(i) + 1;
-      stage.add_axis(s);
-    }
-    q.assign(n, 0.0);
-    qv.assign(n, 0.0);
-    qa.assign(n, 0.0);
-    d.assign(n, 0.0);
-    dv.assign(n, 0.0);
-    da.assign(n, 0.0);
-    referenced = std::make_unique<bool[]>(n);
-    stop.assign(n, plc::ErrorCode::kNone);
-    for (std::size_t i = 0; i < n; ++i)
-      command(i);
-    cycle();
+// The test rig (tests/support/hli_stage_rig.hpp) with every axis the target of a full list.
+struct Bench : hlitest::Rig {
+  static std::vector<nc::hli::AxisSetup> setups(std::size_t axes) {
+    std::vector<nc::hli::AxisSetup> s(axes);
+    for (std::size_t i = 0; i < axes; ++i)
+      s[i].ax_nr = static_cast<int>(i) + 1;
+    return s;
   }
 
-  void command(std::size_t i) {
+  explicit Bench(std::size_t axes) : Rig(setups(axes)) {
+    for (std::size_t i = 0; i < n(); ++i)
+      list(i);
+    Rig::cycle();
+  }
+
+  void list(std::size_t i) {
     static constexpr uint16_t kModes[] = {h::HLI_AXIS_COUPLING_DIRECT, h::HLI_AXIS_COUPLING_MIRROR,
                                           h::HLI_AXIS_COUPLING_FRACT, h::HLI_AXIS_COUPLING_ZERO};
-    h::HLI_AX_COUPLING_COMMAND& c = stage.gpAx()[i]->lr_mc_control.axis_coupling.command_w;
+    h::HLI_AX_COUPLING_COMMAND& c = unit(i).command_w;
     for (std::size_t k = 0; k < c.desc.size(); ++k) {
-      c.desc[k] = {static_cast<int>((i + k) % n) + 1, kModes[k % 4], 3, 7};
+      c.desc[k] = {static_cast<int>((i + k) % n()) + 1, kModes[k % 4], 3, 7};
     }
     c.semaphor_rw = true;
-  }
-
-  void cycle() {
-    stage.cycle(nc::hli::Inputs{q, qv, qa, {referenced.get(), n}},
-                nc::hli::Outputs{d, dv, da, stop});
   }
 };
 
 void BM_HliStageCycle(benchmark::State& state) {
   Bench b(static_cast<std::size_t>(state.range(0)));
-  for (std::size_t i = 0; i < b.n; ++i)
+  for (std::size_t i = 0; i < b.n(); ++i)
     b.qv[i] = 1.0 + static_cast<double>(i);
   for (auto _ : state) {
-    for (std::size_t i = 0; i < b.n; ++i)
+    for (std::size_t i = 0; i < b.n(); ++i)
       b.q[i] += b.qv[i] * 0.001;
     b.cycle();
     benchmark::DoNotOptimize(b.d.data());
@@ -76,8 +58,8 @@ void BM_HliStageTakeList(benchmark::State& state) {
   Bench b(static_cast<std::size_t>(state.range(0)));
   std::size_t next = 0;
   for (auto _ : state) {
-    b.command(next);
-    next = (next + 1) % b.n;
+    b.list(next);
+    next = (next + 1) % b.n();
     b.cycle();
     benchmark::DoNotOptimize(b.d.data());
   }
