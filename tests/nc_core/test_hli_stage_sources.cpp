@@ -71,3 +71,35 @@ TEST_CASE("switching a list off leaves the drive where it stands; it follows its
   rig.move(1, 25.0, 100.0);  // its own program moves its drive again, from where it stood
   CHECK(rig.d[1] == Approx(-475.0).margin(1e-9));
 }
+
+TEST_CASE("switching targets off and stopping one leaves the other targets' couplings intact",
+          "[hli]") {
+  Rig rig({1, 2, 3, 4, 5});
+  rig.command(1, {direct(1), inactive()});
+  rig.command(2, {mirror(1), inactive()});
+  rig.command(3, {fract(1, 1, 4), inactive()});
+  rig.command(4, {fract(1, 3, 1), inactive()});
+  rig.cycle();
+  rig.command(1, {inactive()});  // the first target off: another one's row takes its place
+  rig.cycle();
+  rig.move(0, 8.0, 100.0);
+  CHECK(rig.d[1] == 0.0);
+  CHECK(rig.d[2] == Approx(-8.0).margin(1e-9));
+  CHECK(rig.d[3] == Approx(2.0).margin(1e-9));
+  CHECK(rig.d[4] == Approx(24.0).margin(1e-9));
+  CHECK(rig.stage.factor(4, 0) == 3.0);
+  CHECK(rig.stage.factor(1, 1) == 1.0);  // free: the unit row
+  CHECK(rig.stage.factor(1, 0) == 0.0);
+
+  rig.stage.stop(2);  // the kernel stops a target for its own reasons
+  CHECK_FALSE(rig.unit(2).state_r.active_r);
+  rig.move(0, 4.0, 100.0);
+  CHECK(rig.d[2] == Approx(-8.0).margin(1e-9));
+  CHECK(rig.d[3] == Approx(3.0).margin(1e-9));
+  CHECK(rig.d[4] == Approx(36.0).margin(1e-9));
+  rig.command(1, {direct(1), inactive()});  // and a new row again
+  rig.cycle();
+  rig.move(0, 1.0, 100.0);
+  CHECK(rig.d[1] == Approx(1.0).margin(1e-9));
+  CHECK(rig.d[4] == Approx(39.0).margin(1e-9));
+}

@@ -1,7 +1,8 @@
 // The HLI coupling stage (nc_core/src/hli) on its own: one HliStage::cycle() with n axes, each
 // the target of 8 sources (itself and the next 7 axes, in DIRECT, MIRROR, FRACT and ZERO modes),
 // every program moving — the 64 targets × 8 sources. BM_HliStageTakeList adds one list
-// evaluation (parse, checks, row rewrite) to each cycle, at rest. Reported per stage cycle.
+// evaluation (parse, checks, row rewrite) to each cycle, at rest; BM_HliStageFewTargets has 1024
+// axes of which 64 are targets. Reported per stage cycle.
 //
 // Run: cmake -DNCSDK_BUILD_BENCHMARKS=ON … && ./build/tools/benchmarks/bench_hli_stage
 #include <benchmark/benchmark.h>
@@ -53,6 +54,23 @@ void BM_HliStageCycle(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_HliStageCycle)->Arg(8)->Arg(64);
+
+// A large kernel with few couplings: 1024 axes, 64 of them targets of 8 sources each.
+void BM_HliStageFewTargets(benchmark::State& state) {
+  Bench b(1024);
+  for (std::size_t i = 64; i < b.n(); ++i)
+    b.command(i, {hlitest::inactive()});
+  b.cycle();
+  for (std::size_t i = 0; i < b.n(); ++i)
+    b.qv[i] = 1.0;
+  for (auto _ : state) {
+    for (std::size_t i = 0; i < b.n(); ++i)
+      b.q[i] += b.qv[i] * 0.001;
+    b.cycle();
+    benchmark::DoNotOptimize(b.d.data());
+  }
+}
+BENCHMARK(BM_HliStageFewTargets);
 
 void BM_HliStageTakeList(benchmark::State& state) {
   Bench b(static_cast<std::size_t>(state.range(0)));

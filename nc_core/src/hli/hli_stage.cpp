@@ -77,12 +77,13 @@ plc::hli::HLI_AX& HliStage::add_axis(const AxisSetup& setup) {
   targets_.emplace_back();
   dfs_seen_.resize(n, 0);
 
-  // Grow the matrix keeping the rows in force; the new axis is free (d = q).
+  // Grow the matrix keeping the rows in force; the new axis is free (d = q), without a row.
   k_.conservativeResize(ix(n), ix(n));
   k_.row(ix(n - 1)).setZero();
   k_.col(ix(n - 1)).setZero();
-  k_(ix(n - 1), ix(n - 1)) = 1.0;
-  for (Eigen::VectorXd* v : {&c_, &q_, &qv_, &qa_, &d_, &dv_, &da_}) {
+  rows_.reserve(n);
+  row_of_.push_back(kNoAxis);
+  for (Eigen::VectorXd* v : {&product_, &c_, &q_, &qv_, &qa_, &d_, &dv_, &da_}) {
     v->conservativeResize(ix(n));
     (*v)(ix(n - 1)) = 0.0;
   }
@@ -109,18 +110,32 @@ bool HliStage::cycle(const Inputs& in, const Outputs& out) noexcept {
   qv_ = Eigen::Map<const Eigen::VectorXd>(in.program_velocity.data(), m);
   qa_ = Eigen::Map<const Eigen::VectorXd>(in.program_acceleration.data(), m);
 
-  // 1. Drive positions with the lists in force (a braking axis has a zero row: its d is in c).
+  // 1. Drive values with the lists in force: unit rows for free axes, the stored rows for the
+  //    targets, the brake (kept in c) for braking axes.
   for (std::size_t i = 0; i < n; ++i) {
     if (targets_[i].state == State::kBraking) advance_brake(i);
   }
-  d_.noalias() = k_ * q_;
-  d_ += c_;
-  dv_.noalias() = k_ * qv_;
-  da_.noalias() = k_ * qa_;
+  d_ = q_ + c_;
+  dv_ = qv_;
+  da_ = qa_;
+  const Eigen::Index rows = ix(rows_.size());
+  if (rows > 0) {
+    const auto k = k_.topRows(rows);
+    product_.head(rows).noalias() = k * q_;
+    for (std::size_t j = 0; j < rows_.size(); ++j)
+      d_(ix(rows_[j])) = product_(ix(j)) + c_(ix(rows_[j]));
+    product_.head(rows).noalias() = k * qv_;
+    for (std::size_t j = 0; j < rows_.size(); ++j)
+      dv_(ix(rows_[j])) = product_(ix(j));
+    product_.head(rows).noalias() = k * qa_;
+    for (std::size_t j = 0; j < rows_.size(); ++j)
+      da_(ix(rows_[j])) = product_(ix(j));
+  }
   for (std::size_t i = 0; i < n; ++i) {
     out.stop[i] = ErrorCode::kNone;
     const Target& t = targets_[i];
     if (t.state != State::kBraking) continue;
+    d_(ix(i)) = c_(ix(i));
     dv_(ix(i)) = t.brake_velocity;
     da_(ix(i)) = t.brake_velocity == 0.0
                      ? 0.0
@@ -169,7 +184,6 @@ void HliStage::advance_brake(std::size_t axis) noexcept {
   if (t.brake_velocity == 0.0 && qv_(ix(axis)) == 0.0) {
     t.state = State::kFree;
     c_(ix(axis)) -= q_(ix(axis));
-    k_(ix(axis), ix(axis)) = 1.0;
   }
 }
 
@@ -278,32 +292,53 @@ void HliStage::take(std::size_t target, const Candidate& list) noexcept {
   if (list.count == 0) {
     // Switched off: the drive stays where it stands and follows the program from there.
     t = Target{};
-    set_unit_row(target);
+    drop_row(target);
     c_(r) = d_now - q_(r);
+    dv_(r) = qv_(r);
+    da_(r) = qa_(r);
   } else {
     t.state = State::kCoupled;
     t.count = list.count;
     t.fract = list.fract;
     t.d_activation = d_now;
-    k_.row(r).setZero();
+    if (row_of_[target] == kNoAxis) {
+      row_of_[target] = rows_.size();
+      rows_.push_back(target);  // within the reserve: one row per axis at most
+    }
+    auto row = k_.row(ix(row_of_[target]));
+    row.setZero();
     for (std::size_t e = 0; e < list.count; ++e) {
       t.entries[e] = list.entries[e];
       t.entries[e].q_activation = q_(ix(list.entries[e].source));
-      k_(r, ix(list.entries[e].source)) += list.entries[e].factor;
+      row(ix(list.entries[e].source)) += list.entries[e].factor;
     }
     // d = d(activation) + Σ K·(q − q(activation)): c = d(activation) − Σ K·q(activation).
-    c_(r) = d_now - k_.row(r).dot(q_);
+    c_(r) = d_now - row.dot(q_);
+    dv_(r) = row.dot(qv_);
+    da_(r) = row.dot(qa_);
   }
-  // The new row's drive values from this cycle on (positions unchanged: Δq = 0).
-  d_(r) = d_now;
-  dv_(r) = k_.row(r).dot(qv_);
-  da_(r) = k_.row(r).dot(qa_);
+  d_(r) = d_now;  // Δq = 0 at activation: the position does not jump
   publish(target);
 }
 
-void HliStage::set_unit_row(std::size_t axis) noexcept {
-  k_.row(ix(axis)).setZero();
-  k_(ix(axis), ix(axis)) = 1.0;
+// Removes the axis's row; the last stored row takes its place.
+void HliStage::drop_row(std::size_t axis) noexcept {
+  const std::size_t j = row_of_[axis];
+  if (j == kNoAxis) return;
+  const std::size_t last = rows_.size() - 1;
+  if (j != last) {
+    k_.row(ix(j)) = k_.row(ix(last));
+    rows_[j] = rows_[last];
+    row_of_[rows_[j]] = j;
+  }
+  rows_.pop_back();
+  row_of_[axis] = kNoAxis;
+}
+
+double HliStage::factor(std::size_t target, std::size_t source) const noexcept {
+  if (target >= size() || source >= size()) return 0.0;
+  if (row_of_[target] != kNoAxis) return k_(ix(row_of_[target]), ix(source));
+  return targets_[target].state == State::kFree && target == source ? 1.0 : 0.0;
 }
 
 void HliStage::halt(std::size_t axis, plc::ErrorCode code, const Outputs& out) noexcept {
@@ -320,7 +355,7 @@ void HliStage::stop(std::size_t axis) noexcept {
   t = Target{};
   t.state = State::kBraking;
   t.brake_velocity = v;
-  k_.row(r).setZero();
+  drop_row(axis);
   c_(r) = d_(r);
   publish(axis);
 }

@@ -2,9 +2,11 @@
 //
 // Every axis has a program position q (what its own motion commands) and a drive command
 // position d. The stage owns each axis's HLI control unit (plc::hli::HLI_AX, what gpAx[i] points
-// to) and maps q to d with one coupling matrix over all axes: d = K·q + c (Eigen, dense n×n).
-// A row of an axis without a list is the unit row (d = q + offset); a target's row holds its
-// factors, and c is set when the list is taken so that d does not jump:
+// to) and maps q to d with one coupling matrix over all axes: d = K·q + c (Eigen, dense,
+// row-major; only the targets' rows are stored and multiplied, packed at the top, so the cost
+// per cycle is (number of targets) × (number of axes)). An axis without a list has the unit row
+// (d = q + offset, not stored); a target's row holds its factors, and c is set when the list is
+// taken so that d does not jump:
 // d = d(activation) + Σ K·(q_source − q_source(activation)). Sources contribute program movement,
 // never drive movement, so there are no chains. The stage evaluates a list in the cycle the PLC
 // sets semaphor_rw and resets the semaphore in that same cycle; refused lists change nothing
@@ -99,9 +101,8 @@ class HliStage {
 
   bool coupled(std::size_t axis) const noexcept { return targets_[axis].state == State::kCoupled; }
   bool braking(std::size_t axis) const noexcept { return targets_[axis].state == State::kBraking; }
-  double factor(std::size_t target, std::size_t source) const noexcept {
-    return k_(static_cast<Eigen::Index>(target), static_cast<Eigen::Index>(source));
-  }
+  // K(target, source) in force: the unit row for an axis without a list, 0 while braking.
+  double factor(std::size_t target, std::size_t source) const noexcept;
 
  private:
   enum class State : uint8_t { kFree, kCoupled, kBraking };
@@ -135,7 +136,7 @@ class HliStage {
   bool involved_axis_moves(std::size_t target, const Candidate& list) const noexcept;
   void evaluate(std::size_t target, const Outputs& out) noexcept;
   void take(std::size_t target, const Candidate& list) noexcept;
-  void set_unit_row(std::size_t axis) noexcept;
+  void drop_row(std::size_t axis) noexcept;
   void halt(std::size_t axis, plc::ErrorCode code, const Outputs& out) noexcept;
   void advance_brake(std::size_t axis) noexcept;
   bool cannot_stop_before_limit(std::size_t axis) const noexcept;
@@ -149,10 +150,14 @@ class HliStage {
   std::vector<std::size_t> dfs_stack_;  // loop check scratch (reserved in add_axis)
   std::vector<uint8_t> dfs_seen_;
 
-  Eigen::MatrixXd k_;            // coupling matrix, row = target, column = source
-  Eigen::VectorXd c_;            // offsets
-  Eigen::VectorXd q_, qv_, qa_;  // program state of the last cycle
-  Eigen::VectorXd d_, dv_, da_;  // drive state of the last cycle
+  // Coupling matrix: row j is the row of target rows_[j] (j < rows_.size()), column = source.
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> k_;
+  std::vector<std::size_t> rows_;    // targets in row order (reserved in add_axis)
+  std::vector<std::size_t> row_of_;  // axis → its row, kNoAxis when it has none
+  Eigen::VectorXd product_;          // K·x of the stored rows (scratch, sized in add_axis)
+  Eigen::VectorXd c_;                // offsets: d = q + c (free), K·q + c (target), c (braking)
+  Eigen::VectorXd q_, qv_, qa_;      // program state of the last cycle
+  Eigen::VectorXd d_, dv_, da_;      // drive state of the last cycle
 };
 
 }  // namespace nc::hli
