@@ -3,6 +3,9 @@
 // command velocity in 1e-3 mm/s.
 #include <catch2/catch.hpp>
 
+#include <stdexcept>
+#include <vector>
+
 #include "hli_stage_rig.hpp"
 
 using namespace hlitest;
@@ -86,4 +89,34 @@ TEST_CASE("gpAx is indexed by axis index; ax_nr is the logical number", "[hli]")
   bool ref = false;
   CHECK_FALSE(rig.stage.cycle(nc::hli::Inputs{one, one, one, {&ref, 1}},
                               nc::hli::Outputs{rig.d, rig.dv, rig.da, rig.stop}));
+}
+
+TEST_CASE("axes added while a list is in force keep the list; new axes are free", "[hli]") {
+  nc::hli::HliStage stage(kT);  // no reserve: the matrix grows as axes are added
+  for (int nr : {1, 2})
+    stage.add_axis(nc::hli::AxisSetup{nr});
+  stage.gpAx()[1]->lr_mc_control.axis_coupling.command_w.desc[0] = fract(1, 3, 2);
+  stage.gpAx()[1]->lr_mc_control.axis_coupling.command_w.semaphor_rw = true;
+  std::vector<double> q(2, 0.0), v(2, 0.0), d(2, 0.0), dv(2, 0.0), da(2, 0.0);
+  bool ref[8] = {};
+  std::vector<plc::ErrorCode> stop(2);
+  REQUIRE(stage.cycle({q, v, v, {ref, 2}}, {d, dv, da, stop}));
+  for (int nr : {3, 4, 5, 6, 7})
+    stage.add_axis(nc::hli::AxisSetup{nr});
+  CHECK(stage.factor(1, 0) == 1.5);
+  CHECK(stage.factor(6, 6) == 1.0);
+  CHECK(stage.factor(1, 6) == 0.0);
+  CHECK_THROWS_AS(stage.add_axis(nc::hli::AxisSetup{3}), std::invalid_argument);
+  CHECK_THROWS_AS(stage.add_axis(nc::hli::AxisSetup{0}), std::invalid_argument);
+  q.assign(7, 0.0);
+  v.assign(7, 0.0);
+  d.assign(7, 0.0);
+  dv.assign(7, 0.0);
+  da.assign(7, 0.0);
+  stop.assign(7, plc::ErrorCode::kNone);
+  q[0] = 4.0;
+  q[6] = 2.0;
+  REQUIRE(stage.cycle({q, v, v, {ref, 7}}, {d, dv, da, stop}));
+  CHECK(d[1] == Approx(6.0).margin(1e-9));
+  CHECK(d[6] == 2.0);
 }

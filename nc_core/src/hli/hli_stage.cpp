@@ -17,6 +17,13 @@ namespace {
 using plc::ErrorCode;
 namespace h = plc::hli;
 
+// Reserves room for `count` elements, at least doubling, so that adding axes one by one copies
+// the storage only O(log n) times.
+template <class T>
+void at_least(std::vector<T>& v, std::size_t count) {
+  if (v.capacity() < count) v.reserve(std::max(count, 2 * v.capacity()));
+}
+
 Eigen::Index ix(std::size_t i) noexcept {
   return static_cast<Eigen::Index>(i);
 }
@@ -58,6 +65,17 @@ void HliStage::reserve(std::size_t axes) {
   targets_.reserve(axes);
   dfs_stack_.reserve((axes + 1) * kListSize);
   dfs_seen_.reserve(axes);
+  rows_.reserve(axes);
+  row_of_.reserve(axes);
+  grow_matrix(axes);
+}
+
+// The matrix is kept square at a capacity that grows by doubling (or to a reserve), so adding
+// axes one by one copies it O(log n) times; the part beyond the axes in use is zero.
+void HliStage::grow_matrix(std::size_t axes) {
+  if (axes <= static_cast<std::size_t>(k_.rows())) return;
+  const auto capacity = ix(std::max(axes, 2 * static_cast<std::size_t>(k_.rows())));
+  k_.conservativeResizeLike(Matrix::Zero(capacity, capacity));
 }
 
 plc::hli::HLI_AX& HliStage::add_axis(const AxisSetup& setup) {
@@ -70,18 +88,17 @@ plc::hli::HLI_AX& HliStage::add_axis(const AxisSetup& setup) {
     throw std::invalid_argument("HliStage: emergency deceleration must be > 0, limits finite");
   }
   const std::size_t n = size() + 1;
-  reserve(n);  // no-op when reserved before
+  // What the cycle pushes into must hold n axes' worth without reallocating.
+  at_least(rows_, n);
+  at_least(dfs_stack_, (n + 1) * kListSize);
   setups_.push_back(setup);
   units_.emplace_back();
   pointers_.push_back(&units_.back());
   targets_.emplace_back();
   dfs_seen_.resize(n, 0);
 
-  // Grow the matrix keeping the rows in force; the new axis is free (d = q), without a row.
-  k_.conservativeResize(ix(n), ix(n));
-  k_.row(ix(n - 1)).setZero();
-  k_.col(ix(n - 1)).setZero();
-  rows_.reserve(n);
+  // The new axis is free (d = q), without a row; its column is zero in every stored row.
+  grow_matrix(n);
   row_of_.push_back(kNoAxis);
   for (Eigen::VectorXd* v : {&product_, &c_, &q_, &qv_, &qa_, &d_, &dv_, &da_}) {
     v->conservativeResize(ix(n));
@@ -120,7 +137,7 @@ bool HliStage::cycle(const Inputs& in, const Outputs& out) noexcept {
   da_ = qa_;
   const Eigen::Index rows = ix(rows_.size());
   if (rows > 0) {
-    const auto k = k_.topRows(rows);
+    const auto k = k_.topLeftCorner(rows, m);
     product_.head(rows).noalias() = k * q_;
     for (std::size_t j = 0; j < rows_.size(); ++j)
       d_(ix(rows_[j])) = product_(ix(j)) + c_(ix(rows_[j]));
@@ -305,8 +322,8 @@ void HliStage::take(std::size_t target, const Candidate& list) noexcept {
       row_of_[target] = rows_.size();
       rows_.push_back(target);  // within the reserve: one row per axis at most
     }
-    auto row = k_.row(ix(row_of_[target]));
-    row.setZero();
+    k_.row(ix(row_of_[target])).setZero();  // the whole capacity: unused columns stay zero
+    auto row = k_.row(ix(row_of_[target])).head(ix(size()));
     for (std::size_t e = 0; e < list.count; ++e) {
       t.entries[e] = list.entries[e];
       t.entries[e].q_activation = q_(ix(list.entries[e].source));
@@ -328,6 +345,7 @@ void HliStage::drop_row(std::size_t axis) noexcept {
   const std::size_t last = rows_.size() - 1;
   if (j != last) {
     k_.row(ix(j)) = k_.row(ix(last));
+    k_.row(ix(last)).setZero();
     rows_[j] = rows_[last];
     row_of_[rows_[j]] = j;
   }

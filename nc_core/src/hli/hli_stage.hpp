@@ -137,6 +137,7 @@ class HliStage {
   void evaluate(std::size_t target, const Outputs& out) noexcept;
   void take(std::size_t target, const Candidate& list) noexcept;
   void drop_row(std::size_t axis) noexcept;
+  void grow_matrix(std::size_t axes);
   void halt(std::size_t axis, plc::ErrorCode code, const Outputs& out) noexcept;
   void advance_brake(std::size_t axis) noexcept;
   bool cannot_stop_before_limit(std::size_t axis) const noexcept;
@@ -150,8 +151,10 @@ class HliStage {
   std::vector<std::size_t> dfs_stack_;  // loop check scratch (reserved in add_axis)
   std::vector<uint8_t> dfs_seen_;
 
-  // Coupling matrix: row j is the row of target rows_[j] (j < rows_.size()), column = source.
-  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> k_;
+  // Coupling matrix: row j is the row of target rows_[j] (j < rows_.size()), column = source;
+  // square at a capacity >= size(), zero outside the stored rows and the axes in use.
+  using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  Matrix k_;
   std::vector<std::size_t> rows_;    // targets in row order (reserved in add_axis)
   std::vector<std::size_t> row_of_;  // axis → its row, kNoAxis when it has none
   Eigen::VectorXd product_;          // K·x of the stored rows (scratch, sized in add_axis)
