@@ -197,6 +197,11 @@ void validate(const AxisConfig& config) {
                           ") when both software limits are enabled",
                       config_text::number(config.sw_limit_min));
   }
+  // Seed 002 §4: P-AXIS-00460 changes how the P-AXIS-00436 forward mapping computes.
+  if (config.recalc_input_position_absolute && !config.recalc_link_main_input_position) {
+    throw ConfigError("/recalc_input_position_absolute",
+                      "needs recalc_link_main_input_position (P-AXIS-00436)", "true");
+  }
 }
 
 std::string_view to_string(AxisKind kind) {

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "config_text.hpp"
+#include "nc_core/cnc_parameters.hpp"
 #include "nc_core/config.hpp"
 
 namespace nc {
@@ -293,7 +294,14 @@ AxisConfig parse_axis_config(const json& object, std::string_view pointer) {
   require_object(object, pointer);
   // From code an empty name is refused by validate(); in a file the key must be there at all.
   if (!object.contains("name")) throw ConfigError(child(pointer, "name"), "required");
-  return parse_struct<AxisConfig>(object, pointer);
+  // CNC parameters in native units (seed 002 §4) map onto fields once those are read.
+  const auto cnc = object.find("cnc");
+  if (cnc == object.end()) return parse_struct<AxisConfig>(object, pointer);
+  json fields = object;
+  fields.erase("cnc");
+  AxisConfig config = parse_struct<AxisConfig>(fields, pointer);
+  cnc::apply_cnc_parameters(*cnc, object, pointer, config);
+  return config;
 }
 
 KernelSetup parse_kernel_setup(const json& document) {

@@ -7,20 +7,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include "config_error_of.hpp"
 #include "nc_core/config.hpp"
 
+using cfgtest::error_of;
 using nlohmann::json;
 
 namespace {
-
-std::optional<nc::ConfigError> error_of(const json& document) {
-  try {
-    (void)nc::parse_kernel_setup(document);
-  } catch (const nc::ConfigError& e) {
-    return e;
-  }
-  return std::nullopt;
-}
 
 // Two valid axes; tests break one thing in them.
 json two_axes() {

@@ -5,6 +5,7 @@
 // docs/blocks.md lists every block's inputs, outputs and errors.
 #pragma once
 
+#include "fb/hli_axis_coupling.hpp"
 #include "fb/mc_abort_superposition.hpp"
 #include "fb/mc_ext_set_point_gen_disable.hpp"
 #include "fb/mc_ext_set_point_gen_enable.hpp"

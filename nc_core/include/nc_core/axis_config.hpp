@@ -84,6 +84,11 @@ struct AxisConfig {
   // velocity and position". Each taken packet is carried this far ahead along its velocity and
   // acceleration, compensating the transport dead time of the cyclic interface.
   double ext_setpoint_delay = 0.0;  // s, 0 … 1 (0 = none)
+
+  // HLI axis coupling, command-position request (SPEC D5, seed 002 §4). The CNC parameters in
+  // their native units load from the JSON "cnc" object (docs/configuration.md).
+  bool recalc_link_main_input_position = false;  // P-AXIS-00436: forward mapping of d
+  bool recalc_input_position_absolute = false;   // P-AXIS-00460: ... as if coupled at 0 (needs 436)
 };
 
 }  // namespace nc

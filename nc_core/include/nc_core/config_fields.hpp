@@ -172,6 +172,13 @@ void visit_fields(Config& c, Visitor&& v) {
   v(FieldInfo{"ext_setpoint_delay", "s",
               "delay time between velocity and position: external packets carried ahead by it"},
     c.ext_setpoint_delay, closed_range(0.0, 1.0));
+
+  v(FieldInfo{"recalc_link_main_input_position", "",
+              "P-AXIS-00436: command-position request maps the drive position forward"},
+    c.recalc_link_main_input_position, FlagRule{});
+  v(FieldInfo{"recalc_input_position_absolute", "",
+              "P-AXIS-00460: forward mapping as if coupled at position 0; needs P-AXIS-00436"},
+    c.recalc_input_position_absolute, FlagRule{});
 }
 
 }  // namespace nc

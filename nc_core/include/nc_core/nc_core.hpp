@@ -2,6 +2,7 @@
 #pragma once
 
 #include "nc_core/axis_config.hpp"
+#include "nc_core/cnc_parameters.hpp"
 #include "nc_core/config.hpp"
 #include "nc_core/cycle_driver.hpp"
 #include "nc_core/kernel.hpp"
