@@ -16,12 +16,12 @@ double modulo(double p, double factor) noexcept {
 
 }  // namespace
 
-void ServoAxis::publish(uint64_t cycle_counter) noexcept {
+void ServoAxis::phase_publish(uint64_t cycle_counter) noexcept {
   using plc::AxisState;
-  plc::NCTOPLC_AXIS_REF& out = ref_.NcToPlc;
+  plc::NCTOPLC_AXIS_REF& out = channel_.ref().NcToPlc;
   const double actual = drive_.measured_position();
-  const bool enabled = controller_enabled();
-  const bool error = error_ != ErrorCode::kNone;
+  const bool enabled = channel_.controller_enabled();
+  const bool error = channel_.has_error();
   const JobKind kind = job_.kind();
 
   out.SetPos = set_.p;
@@ -39,12 +39,8 @@ void ServoAxis::publish(uint64_t cycle_counter) noexcept {
   out.CompensationDistance = compensation_.done();  // travel-relative, as D
   out.CompensationLength = compensation_.length();
   out.CompensationVelocityDiff = compensation_.velocity_diff();
-  out.ErrorCode = plc::to_id(error_);
-  out.Warning = warning_;
-  out.CmdNo = cmd_no_;
-  out.CmdState = static_cast<uint16_t>(cmd_state_);
+  channel_.publish(static_cast<int32_t>(index_));
   out.CoupleState = static_cast<uint32_t>(plc::CoupleState::kSingle);
-  out.AxisIndex = static_cast<int32_t>(index_);
   out.CycleCounter = static_cast<uint32_t>(cycle_counter);
 
   // Constant velocity: a velocity job at its level, or the cruise phase of a positioning.

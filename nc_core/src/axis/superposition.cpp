@@ -23,7 +23,7 @@ bool is_stop(JobKind kind) noexcept {
 ErrorCode ServoAxis::start_compensation(const plc::Command& command) noexcept {
   // Seed 000 §2.5 general notes 8, 4, 5 and the start parameters, in this order.
   if (config_.kind == AxisKind::kEncoder) return ErrorCode::kAxisKindNotAllowed;
-  if (error_ != ErrorCode::kNone) return ErrorCode::kAxisInErrorState;
+  if (channel_.has_error()) return ErrorCode::kAxisInErrorState;
   if (compensation_.running()) return ErrorCode::kCompensationActive;  // no iteration
   if (is_stop(job_.kind())) return ErrorCode::kStopAlreadyActive;
   if (locked_) return ErrorCode::kMotionCommandsLocked;
@@ -63,31 +63,31 @@ ErrorCode ServoAxis::start_compensation(const plc::Command& command) noexcept {
     }
   }
   compensation_ = planned_compensation;
-  ref_.Mailbox.set_answer(command.number, CommandState::kActive);
-  const uint32_t incomplete = plc::to_id(ErrorCode::kCompensationIncomplete);
-  if (warning_ == incomplete) warning_ = 0;  // a former compensation's warning
-  if (compensation_.planned_incomplete()) warning_ = incomplete;
+  channel_.answer(command.number, CommandState::kActive);
+  channel_.clear_warning(Warning::kCompensationIncomplete);  // a former compensation's warning
+  if (compensation_.planned_incomplete()) channel_.warn(Warning::kCompensationIncomplete);
   return ErrorCode::kNone;
 }
 
 ErrorCode ServoAxis::stop_compensation(const plc::Command& command) noexcept {
   const ErrorCode code = compensation_.request_stop();
   if (code != ErrorCode::kNone) return code;
-  ref_.Mailbox.set_answer(command.number, CommandState::kDone);
+  channel_.answer(command.number, CommandState::kDone);
   return ErrorCode::kNone;
 }
 
 ErrorCode ServoAxis::enable_external(const plc::Command& command) noexcept {
   // Seed 000 §2.6 "Activation": no axis error, controller and feed enables, not coupled (there
   // is no coupling yet); the start type must match one already active.
-  if (error_ != ErrorCode::kNone) return ErrorCode::kAxisInErrorState;
+  if (channel_.has_error()) return ErrorCode::kAxisInErrorState;
   if (!std::isfinite(command.position)) return ErrorCode::kPositionNotFinite;
   if (command.mode != static_cast<int32_t>(Type::kAbsolute) &&
       command.mode != static_cast<int32_t>(Type::kRelative)) {
     return ErrorCode::kStartTypeNotAllowed;
   }
   const Type type = static_cast<Type>(command.mode);
-  if (!controller_enabled() || !feed_enabled(1.0) || !feed_enabled(-1.0)) {
+  if (!channel_.controller_enabled() || !channel_.feed_enabled(1.0) ||
+      !channel_.feed_enabled(-1.0)) {
     return ErrorCode::kNoControllerOrFeedEnable;
   }
   if (external_.taking() && external_.type() != type) return ErrorCode::kStartTypeNotAllowed;
@@ -113,20 +113,13 @@ ErrorCode ServoAxis::enable_external(const plc::Command& command) noexcept {
   }
   target_ = target;
   monitors_.reset_windows();
-  ref_.Mailbox.set_answer(command.number, CommandState::kDone);
+  channel_.answer(command.number, CommandState::kDone);
   return ErrorCode::kNone;
 }
 
 ErrorCode ServoAxis::disable_external(const plc::Command& command) noexcept {
   external_.disable();  // disabling what is not enabled is not an error: nothing to do
-  ref_.Mailbox.set_answer(command.number, CommandState::kDone);
-  return ErrorCode::kNone;
-}
-
-ErrorCode ServoAxis::check_start_with_superpositions() const noexcept {
-  // Seed 000 §2.6: external generation may join a running PTP motion (relative), "the opposite
-  // case is not permitted".
-  if (external_.enabled()) return ErrorCode::kStartTypeNotAllowed;
+  channel_.answer(command.number, CommandState::kDone);
   return ErrorCode::kNone;
 }
 
@@ -159,7 +152,7 @@ void ServoAxis::superimpose() noexcept {
 
   bool not_finite = false;
   if (external_.taking()) {
-    const ExternalSetpoint::Step step = external_.take(ref_.PlcToNc, cycle_time_);
+    const ExternalSetpoint::Step step = external_.take(channel_.ref().PlcToNc, cycle_time_);
     not_finite = step.not_finite;
     if (external_.type() == Type::kAbsolute) {
       total = step.state;
@@ -200,16 +193,16 @@ KinematicState ServoAxis::stop_start_state() const noexcept {
 
 void ServoAxis::end_compensation(plc::CommandState state, uint32_t code) noexcept {
   held_ += compensation_.finish();
-  ref_.Mailbox.set_answer(compensation_.number(), state, code);
-  if (compensation_.incomplete()) warning_ = plc::to_id(ErrorCode::kCompensationIncomplete);
+  channel_.answer(compensation_.number(), state, code);
+  if (compensation_.incomplete()) channel_.warn(Warning::kCompensationIncomplete);
 }
 
 void ServoAxis::fold_superpositions(plc::CommandState state, ErrorCode code) noexcept {
   if (compensation_.running()) {
     // Its offset so far is in set_, where the new job starts: nothing to hold.
     compensation_.finish();
-    ref_.Mailbox.set_answer(compensation_.number(), state, plc::to_id(code));
-    if (compensation_.incomplete()) warning_ = plc::to_id(ErrorCode::kCompensationIncomplete);
+    channel_.answer(compensation_.number(), state, plc::to_id(code));
+    if (compensation_.incomplete()) channel_.warn(Warning::kCompensationIncomplete);
   }
   external_.abort();
   held_ = 0.0;
