@@ -111,7 +111,7 @@ ErrorCode ServoAxis::check_start(const plc::Command& command, bool has_position,
   if (locked_) return ErrorCode::kMotionCommandsLocked;
   // Seed 000 §2.6: external generation may join a running PTP motion (relative), "the opposite
   // case is not permitted".
-  if (external_.enabled()) return ErrorCode::kStartTypeNotAllowed;
+  if (stack_.external().enabled()) return ErrorCode::kStartTypeNotAllowed;
   if (command.buffer_mode != plc::MC_Aborting) return ErrorCode::kBufferModeNotSupported;
   if (has_position && !std::isfinite(command.position)) return ErrorCode::kPositionNotFinite;
   return check_dynamics(command, limits);
@@ -206,7 +206,7 @@ ErrorCode ServoAxis::start_halt_or_stop(const plc::Command& command) noexcept {
     limits.jerk = command.jerk;
   }
   // Without the running compensation: it gets its compensation stop on top (seed 000 §2.5).
-  scratch_ = plan_stop(stop_start_state(), limits.deceleration, limits.jerk);
+  scratch_ = plan_stop(stack_.stop_start_state(set_), limits.deceleration, limits.jerk);
   if (!scratch_.ok()) return scratch_.error();
   accept(stop ? JobKind::kStop : JobKind::kHalt, command.number, scratch_, scratch_.final_state().p,
          0.0, limits);
@@ -220,7 +220,11 @@ void ServoAxis::accept(JobKind kind, uint16_t number, const Profile& profile, do
                        double target_velocity, const Limits& limits) noexcept {
   const uint16_t running = job_.active() ? job_.number() : 0;
   job_.start(kind, number, profile, target, target_velocity, limits);
-  superpositions_on_new_job(kind);
+  if (kind == JobKind::kHalt || kind == JobKind::kStop) {
+    stack_.on_stop();
+  } else {
+    fold_superpositions(CommandState::kAborted);
+  }
   channel_.take_over(number, running);
   if (kind != JobKind::kVelocity) target_ = target;
   monitors_.reset_windows();

@@ -67,7 +67,8 @@ ErrorCode ServoAxis::check_new_target(double target) const noexcept {
     return ErrorCode::kTargetPositionNotAllowed;
   }
   if (job_.kind() != JobKind::kPosition) return ErrorCode::kFunctionNotAllowed;
-  if (compensation_active()) return ErrorCode::kCompensationActive;  // seed 000 §2.3, §2.4
+  if (stack_.compensation().running())
+    return ErrorCode::kCompensationActive;  // seed 000 §2.3, §2.4
   if (!channel_.controller_enabled() || !channel_.feed_enabled(target - basic_state().p)) {
     return ErrorCode::kNoControllerOrFeedEnable;
   }
@@ -182,7 +183,7 @@ bool ServoAxis::activate_velocity(double velocity) noexcept {
 
 void ServoAxis::install_table(double target, bool final, double level) noexcept {
   job_.replan(scratch_, final);
-  rebase_superpositions();  // planned from basic_state(): the held offset is in the table now
+  stack_.rebase();  // planned from basic_state(): the held offset is in the table now
   if (job_.kind() == JobKind::kPosition) {
     job_.set_target(target);
     target_ = target;

@@ -36,9 +36,9 @@ void ServoAxis::phase_publish(uint64_t cycle_counter) noexcept {
   out.ModuloSetPos = modulo(set_.p, config_.modulo_factor);
   out.TargetPos = target_;
   out.TargetVelo = job_.active() ? job_.target_velocity() : 0.0;
-  out.CompensationDistance = compensation_.done();  // travel-relative, as D
-  out.CompensationLength = compensation_.length();
-  out.CompensationVelocityDiff = compensation_.velocity_diff();
+  out.CompensationDistance = stack_.compensation().done();  // travel-relative, as D
+  out.CompensationLength = stack_.compensation().length();
+  out.CompensationVelocityDiff = stack_.compensation().velocity_diff();
   channel_.publish(static_cast<int32_t>(index_));
   out.CoupleState = static_cast<uint32_t>(plc::CoupleState::kSingle);
   out.CycleCounter = static_cast<uint32_t>(cycle_counter);
@@ -61,8 +61,8 @@ void ServoAxis::phase_publish(uint64_t cycle_counter) noexcept {
   word = plc::with_bit(word, plc::kStatePositiveDirection, set_.v > 0.0);
   word = plc::with_bit(word, plc::kStateNegativeDirection, set_.v < 0.0);
   word = plc::with_bit(word, plc::kStateConstantVelocity, constant_velocity);
-  word = plc::with_bit(word, plc::kStateCompensating, compensation_.running());
-  word = plc::with_bit(word, plc::kStateExtSetPointGenEnabled, external_.enabled());
+  word = plc::with_bit(word, plc::kStateCompensating, stack_.compensation().running());
+  word = plc::with_bit(word, plc::kStateExtSetPointGenEnabled, stack_.external().enabled());
   word = plc::with_bit(word, plc::kStateContinuousMotion, kind == JobKind::kVelocity);
   word = plc::with_bit(word, plc::kStatePtpMode, true);
   word = plc::with_bit(word, plc::kStateSoftLimitMinExceeded, monitors_.below_min(actual));

@@ -69,7 +69,7 @@ void ServoAxis::check_enables() noexcept {
   }
   // Feed enable removed in the direction of travel: the axis stops on its error ramp (also when
   // external setpoints move it).
-  if ((job_.is_motion() || external_.enabled()) && !channel_.has_error()) {
+  if ((job_.is_motion() || stack_.external().enabled()) && !channel_.has_error()) {
     if (set_.v > 0.0 && !channel_.feed_enabled(1.0)) {
       raise_error(ErrorCode::kFeedEnablePlusMissing);
     } else if (set_.v < 0.0 && !channel_.feed_enabled(-1.0)) {
@@ -85,19 +85,57 @@ void ServoAxis::generate_set_values() noexcept {
     end_external_generation();  // seed 000 §2.6: the controller enable's edge switches it off
     return;
   }
-  if (job_.active()) {
-    base_ = job_.advance(cycle_time_);
-    set_jerk_ = job_.jerk();
-  } else if (compensation_.running() || external_.taking()) {
-    base_.v = 0.0;  // the basic motion holds; a superposition may still move the axis
-    base_.a = 0.0;
-    set_jerk_ = 0.0;
-  } else {
-    base_ = KinematicState{set_.p, 0.0, 0.0};  // the axis holds where it is
-    held_ = 0.0;
-    set_jerk_ = 0.0;
+  bool not_finite = false;
+  bool absolute_ended = false;
+  switch (source()) {
+    case SetValueSource::kPtpJob:
+      base_ = job_.advance(cycle_time_);
+      set_jerk_ = job_.jerk();
+      break;
+    case SetValueSource::kExternalAbsolute: {
+      const ExternalSetpoint::Step step =
+          stack_.external().take(channel_.ref().PlcToNc, cycle_time_);
+      base_ = step.state;
+      set_jerk_ = 0.0;
+      not_finite = step.not_finite;
+      absolute_ended = step.finished;
+      break;
+    }
+    case SetValueSource::kHold:
+      if (stack_.moves_alone()) {
+        base_.v = 0.0;  // the basic motion holds; a superposition may still move the axis
+        base_.a = 0.0;
+      } else {
+        base_ = KinematicState{set_.p, 0.0, 0.0};  // the axis holds where it is
+        stack_.drop_held();
+      }
+      set_jerk_ = 0.0;
+      break;
   }
-  superimpose();  // superposition.cpp: set_ = base_ + compensation + external setpoints
+  SuperpositionStack::Basic basic;
+  basic.state = base_;
+  basic.path_running = job_.active() && !job_.generation_ended();
+  basic.has_target = job_.active() && job_.kind() != JobKind::kVelocity;
+  basic.target = job_.target();
+  const SuperpositionStack::Result r =
+      stack_.superimpose(basic, channel_.ref().PlcToNc, channel_, cycle_time_);
+  set_ = r.set;
+  if (r.target_moved) target_ = r.target;
+  if (absolute_ended) {
+    base_ = KinematicState{set_.p, 0.0, 0.0};  // the last packet taken: the axis holds there
+    stack_.drop_held();
+  }
+  // A packet with NaN or inf is not taken; the axis must not run on it (SPEC B8).
+  if (not_finite || r.not_finite) raise_error(ErrorCode::kParameterNotFinite);
+}
+
+SetValueSource ServoAxis::source() const noexcept {
+  if (job_.active()) return SetValueSource::kPtpJob;
+  const ExternalSetpoint& external = stack_.external();
+  if (external.taking() && external.type() == ExternalSetpoint::Type::kAbsolute) {
+    return SetValueSource::kExternalAbsolute;
+  }
+  return SetValueSource::kHold;
 }
 
 void ServoAxis::control_and_drive() noexcept {
@@ -138,7 +176,7 @@ void ServoAxis::run_monitors() noexcept {
   // generator (seed 000 §2.6) is not feeding a motion (direction ±1), so a fed motion passing
   // through its target window is not "in target position".
   const bool settled =
-      channel_.controller_enabled() && !external_.moving() &&
+      channel_.controller_enabled() && !stack_.external().moving() &&
       (!job_.active() || (job_.kind() != JobKind::kVelocity && job_.generation_ended()));
   monitors_.windows(actual, target_, settled);
 }

@@ -18,6 +18,8 @@
 #include "axis/master_job.hpp"
 #include "axis/monitors.hpp"
 #include "axis/position_controller.hpp"
+#include "axis/set_value_source.hpp"
+#include "axis/superposition_stack.hpp"
 #include "nc_core/axis_config.hpp"
 #include "nc_core/axis_snapshot.hpp"
 #include "nc_core/profile.hpp"
@@ -41,10 +43,6 @@ class ServoAxis {
   void phase_drive(AxisSnapshot& snapshot) noexcept;       // (d)
   void phase_monitors(AxisSnapshot& snapshot) noexcept;    // (e)
   void phase_publish(uint64_t cycle_counter) noexcept;     // (f)
-
-  // A position compensation (MC_MoveSuperImposed) is running: new-position functions are refused
-  // meanwhile (seed 000 §2.5 note 9).
-  bool compensation_active() const noexcept { return compensation_.running(); }
 
  private:
   // --- commands.cpp ---
@@ -70,7 +68,10 @@ class ServoAxis {
 
   // --- servo_axis.cpp ---
   void check_enables() noexcept;
+  // Step b: the basic source's set values, then the superposition stack on top.
   void generate_set_values() noexcept;
+  // The one basic source of this cycle (set_value_source.hpp).
+  SetValueSource source() const noexcept;
   void control_and_drive() noexcept;
   void run_monitors() noexcept;
   void finish_job() noexcept;
@@ -118,33 +119,19 @@ class ServoAxis {
   // --- modulo.cpp (B1 modulo start, seed 000 §2.1) ---
   ErrorCode start_modulo(const plc::Command& command) noexcept;
 
-  // --- superposition.cpp (B7 position compensation, B8 external setpoints) ---
-  // set_ = base_ + held_ + the running compensation + the external offset (relative), or the
-  // external set values (absolute). Every new plan of the basic motion either starts from set_
-  // and then calls fold_superpositions() (accept() and raise_error() do: the superpositions end),
-  // or starts from basic_state() and then calls rebase_superpositions() (they go on).
+  // --- superposition.cpp (B7 position compensation, B8 external setpoints: their commands, and
+  // the stack's rules where the axis's basic state must follow) ---
   ErrorCode start_compensation(const plc::Command& command) noexcept;
   ErrorCode stop_compensation(const plc::Command& command) noexcept;
   ErrorCode enable_external(const plc::Command& command) noexcept;
   ErrorCode disable_external(const plc::Command& command) noexcept;
-  // Step b, after the basic set values (base_) of this cycle: adds the superpositions into set_.
-  void superimpose() noexcept;
   // The set state without the running compensation and the external offset: where a replan of
   // the basic motion starts when the superpositions are to go on.
   KinematicState basic_state() const noexcept;
-  // Halt / Stop start here: set_ without the running compensation (which gets its compensation
-  // stop and goes on to the stop's end of path, seed 000 §2.5).
-  KinematicState stop_start_state() const noexcept;
-  // After job_.start() of a job planned from set_: the compensation ends (answered `state`, with
-  // `code` for kError), the external generation is switched off, the held offsets are dropped.
+  // A job planned from set_ starts: SuperpositionStack::fold(), and the basic motion is set_.
   void fold_superpositions(plc::CommandState state, ErrorCode code = ErrorCode::kNone) noexcept;
-  // After job_.start() of a job planned from basic_state(): the held offset is in the new job.
-  void rebase_superpositions() noexcept;
-  // accept(): which of the two above a new job of `kind` needs (Halt / Stop: compensation stop).
-  void superpositions_on_new_job(JobKind kind) noexcept;
   // Reset, or the controller enable gone: the external generation is switched off at once.
   void end_external_generation() noexcept;
-  void end_compensation(plc::CommandState state, uint32_t code = 0) noexcept;
 
   AxisConfig config_;
   double cycle_time_;
@@ -158,10 +145,8 @@ class ServoAxis {
   Monitors monitors_{};
 
   KinematicState set_{};   // set values of this cycle (basic motion + superpositions)
-  KinematicState base_{};  // the basic motion's own set values (the master job's, or held)
-  double held_ = 0.0;      // offsets of ended superpositions, kept until the basic job changes
-  Compensation compensation_{};
-  ExternalSetpoint external_{};
+  KinematicState base_{};  // the basic source's own set values
+  SuperpositionStack stack_{};
   double set_jerk_ = 0.0;
   double previous_set_position_ = 0.0;
   double previous_measured_ = 0.0;
