@@ -201,7 +201,12 @@ class Kernel {
   double time() const noexcept { return static_cast<double>(cycles_) * config_.cycle_time; }
 
  private:
+  // Axes per block of the phase loops while nothing is coupled (see cycle()).
+  static constexpr std::size_t kBlockAxes = 32;
+
   detail::ServoAxis& find(std::string_view name) const;
+  // Phases (a) … (f) over axes [first, last) of the set-value order.
+  void run_phases(std::size_t first, std::size_t last, uint64_t counter) noexcept;
 
   KernelConfig config_;
   std::vector<std::unique_ptr<detail::ServoAxis>> axes_;

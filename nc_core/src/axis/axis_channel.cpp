@@ -70,13 +70,4 @@ uint32_t AxisChannel::warning_code() const noexcept {
   return 0;
 }
 
-void AxisChannel::publish(int32_t index) noexcept {
-  plc::NCTOPLC_AXIS_REF& out = ref_.NcToPlc;
-  out.ErrorCode = plc::to_id(error_);
-  out.Warning = warning_code();
-  out.CmdNo = cmd_no_;
-  out.CmdState = static_cast<uint16_t>(cmd_state_);
-  out.AxisIndex = index;
-}
-
 }  // namespace nc::detail

@@ -60,7 +60,14 @@ class AxisChannel {
   uint32_t warning_code() const noexcept;
 
   // CmdNo, CmdState, ErrorCode, Warning and AxisIndex of NcToPlc.
-  void publish(int32_t index) noexcept;
+  void publish(int32_t index) noexcept {
+    plc::NCTOPLC_AXIS_REF& out = ref_.NcToPlc;
+    out.ErrorCode = plc::to_id(error_);
+    out.Warning = warnings_ == 0 ? 0 : warning_code();
+    out.CmdNo = cmd_no_;
+    out.CmdState = static_cast<uint16_t>(cmd_state_);
+    out.AxisIndex = index;
+  }
 
  private:
   plc::AXIS_REF ref_{};

@@ -23,8 +23,10 @@ double velocity_direction(int32_t direction) noexcept {
 }  // namespace
 
 void ServoAxis::handle_commands() noexcept {
+  plc::CommandMailbox& mailbox = channel_.ref().Mailbox;
+  if (mailbox.pending() == 0) return;  // the steady case: no call into the mailbox
   plc::Command command;
-  while (channel_.ref().Mailbox.take(command))
+  while (mailbox.take(command))
     handle(command);
 }
 

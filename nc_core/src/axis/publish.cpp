@@ -2,6 +2,7 @@
 // values as TwinCAT / Tc2_MC2 number them).
 #include <cmath>
 
+#include "axis/rounding.hpp"
 #include "axis/servo_axis.hpp"
 
 namespace nc::detail {
@@ -9,7 +10,7 @@ namespace nc::detail {
 namespace {
 
 double modulo(double p, double factor) noexcept {
-  double m = p - factor * std::floor(p / factor);
+  double m = p - factor * floor_exact(p / factor);
   if (m >= factor || m < 0.0) m = 0.0;  // rounding at the period edge
   return m;
 }
