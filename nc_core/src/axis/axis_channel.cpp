@@ -10,19 +10,7 @@ constexpr plc::ErrorCode kWarningCodes[] = {plc::ErrorCode::kMovementSmallerThan
                                             plc::ErrorCode::kOverrideNotAllowed,
                                             plc::ErrorCode::kCompensationIncomplete};
 
-uint8_t bit(Warning w) noexcept {
-  return static_cast<uint8_t>(1U << static_cast<unsigned>(w));
-}
-
 }  // namespace
-
-bool AxisChannel::feed_enabled(double direction) const noexcept {
-  if (direction > 0.0) return plc::test_bit(ref_.PlcToNc.ControlDWord, plc::kControlFeedEnablePlus);
-  if (direction < 0.0) {
-    return plc::test_bit(ref_.PlcToNc.ControlDWord, plc::kControlFeedEnableMinus);
-  }
-  return true;
-}
 
 bool AxisChannel::runs(uint16_t job_number) const noexcept {
   return job_number != 0 && job_number == cmd_no_ &&
@@ -46,22 +34,13 @@ bool AxisChannel::raise(plc::ErrorCode code) noexcept {
   return true;
 }
 
-void AxisChannel::warn(Warning w) noexcept {
-  warnings_ = static_cast<uint8_t>(warnings_ | bit(w));
-  last_warning_ = w;
-}
-
-void AxisChannel::clear_warning(Warning w) noexcept {
-  warnings_ = static_cast<uint8_t>(warnings_ & ~bit(w));
-}
-
 void AxisChannel::clear_warnings_except(Warning keep) noexcept {
-  warnings_ = static_cast<uint8_t>(warnings_ & bit(keep));
+  warnings_ = static_cast<uint8_t>(warnings_ & warning_bit(keep));
 }
 
 uint32_t AxisChannel::warning_code() const noexcept {
   if (warnings_ == 0) return 0;
-  if ((warnings_ & bit(last_warning_)) != 0)
+  if ((warnings_ & warning_bit(last_warning_)) != 0)
     return plc::to_id(kWarningCodes[static_cast<int>(last_warning_)]);
   // The last one was cleared: the first of those still latched.
   for (unsigned i = 0; i < 3; ++i) {

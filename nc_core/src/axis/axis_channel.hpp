@@ -20,6 +20,10 @@ enum class Warning : uint8_t {
   kCompensationIncomplete,        // 0x4243, less than D compensated
 };
 
+inline uint8_t warning_bit(Warning w) noexcept {
+  return static_cast<uint8_t>(1U << static_cast<unsigned>(w));
+}
+
 class AxisChannel {
  public:
   plc::AXIS_REF& ref() noexcept { return ref_; }
@@ -29,7 +33,12 @@ class AxisChannel {
     return plc::test_bit(ref_.PlcToNc.ControlDWord, plc::kControlEnable);
   }
   // The feed enable of a direction (> 0 plus, < 0 minus); 0 needs none.
-  bool feed_enabled(double direction) const noexcept;
+  bool feed_enabled(double direction) const noexcept {
+    const uint32_t word = ref_.PlcToNc.ControlDWord;
+    if (direction > 0.0) return plc::test_bit(word, plc::kControlFeedEnablePlus);
+    if (direction < 0.0) return plc::test_bit(word, plc::kControlFeedEnableMinus);
+    return true;
+  }
 
   // A command that does not become the axis's job (a refusal, a Done at once, an answer to a
   // superposition command).
@@ -52,8 +61,13 @@ class AxisChannel {
   bool raise(plc::ErrorCode code) noexcept;
   void clear_error() noexcept { error_ = plc::ErrorCode::kNone; }
 
-  void warn(Warning w) noexcept;
-  void clear_warning(Warning w) noexcept;
+  void warn(Warning w) noexcept {
+    warnings_ = static_cast<uint8_t>(warnings_ | warning_bit(w));
+    last_warning_ = w;
+  }
+  void clear_warning(Warning w) noexcept {
+    warnings_ = static_cast<uint8_t>(warnings_ & ~warning_bit(w));
+  }
   // All warnings but `keep` (kept when latched).
   void clear_warnings_except(Warning keep) noexcept;
   void clear_warnings() noexcept { warnings_ = 0; }

@@ -50,26 +50,29 @@ void ServoAxis::phase_publish(uint64_t cycle_counter) noexcept {
                                  (kind == JobKind::kPosition && !job_.generation_ended() &&
                                   set_.v != 0.0 && std::abs(set_.a) <= a_eps && set_jerk_ == 0.0);
 
+  // Bits or-ed in without branches (every bit starts at 0).
   uint32_t word = 0;
-  word = plc::with_bit(word, plc::kStateOperational, enabled && !error);
-  word = plc::with_bit(word, plc::kStateHomed, true);  // no homing yet: every axis counts as homed
-  word = plc::with_bit(word, plc::kStateNotMoving,
-                       std::abs(drive_.velocity()) < config_.standstill_window);
-  word = plc::with_bit(word, plc::kStateInPositionArea, monitors_.in_position_area());
-  word = plc::with_bit(word, plc::kStateInTargetPosition, monitors_.in_target_position());
-  word = plc::with_bit(word, plc::kStateHasBeenStopped, has_been_stopped_);
-  word = plc::with_bit(word, plc::kStateHasJob, job_.active());
-  word = plc::with_bit(word, plc::kStatePositiveDirection, set_.v > 0.0);
-  word = plc::with_bit(word, plc::kStateNegativeDirection, set_.v < 0.0);
-  word = plc::with_bit(word, plc::kStateConstantVelocity, constant_velocity);
-  word = plc::with_bit(word, plc::kStateCompensating, stack_.compensation().running());
-  word = plc::with_bit(word, plc::kStateExtSetPointGenEnabled, stack_.external().enabled());
-  word = plc::with_bit(word, plc::kStateContinuousMotion, kind == JobKind::kVelocity);
-  word = plc::with_bit(word, plc::kStatePtpMode, true);
-  word = plc::with_bit(word, plc::kStateSoftLimitMinExceeded, monitors_.below_min(actual));
-  word = plc::with_bit(word, plc::kStateSoftLimitMaxExceeded, monitors_.above_max(actual));
-  word = plc::with_bit(word, plc::kStateMotionCommandsLocked, locked_);
-  word = plc::with_bit(word, plc::kStateError, error);
+  const auto set_bit = [&word](plc::StateBit bit, bool value) noexcept {
+    word |= static_cast<uint32_t>(value) << bit;
+  };
+  set_bit(plc::kStateOperational, enabled && !error);
+  set_bit(plc::kStateHomed, true);  // no homing yet: every axis counts as homed
+  set_bit(plc::kStateNotMoving, std::abs(drive_.velocity()) < config_.standstill_window);
+  set_bit(plc::kStateInPositionArea, monitors_.in_position_area());
+  set_bit(plc::kStateInTargetPosition, monitors_.in_target_position());
+  set_bit(plc::kStateHasBeenStopped, has_been_stopped_);
+  set_bit(plc::kStateHasJob, job_.active());
+  set_bit(plc::kStatePositiveDirection, set_.v > 0.0);
+  set_bit(plc::kStateNegativeDirection, set_.v < 0.0);
+  set_bit(plc::kStateConstantVelocity, constant_velocity);
+  set_bit(plc::kStateCompensating, stack_.compensation().running());
+  set_bit(plc::kStateExtSetPointGenEnabled, stack_.external().enabled());
+  set_bit(plc::kStateContinuousMotion, kind == JobKind::kVelocity);
+  set_bit(plc::kStatePtpMode, true);
+  set_bit(plc::kStateSoftLimitMinExceeded, monitors_.below_min(actual));
+  set_bit(plc::kStateSoftLimitMaxExceeded, monitors_.above_max(actual));
+  set_bit(plc::kStateMotionCommandsLocked, locked_);
+  set_bit(plc::kStateError, error);
   out.StateDWord = word;
 
   // PLCopen state, in the priority of the PLCopen state diagram.

@@ -52,9 +52,10 @@ void ServoAxis::phase_monitors(AxisSnapshot& snapshot) noexcept {
   finish_job();
   snapshot.error = channel_.error();
   snapshot.error_event = error_event_;
-  snapshot.controller_enabled = channel_.controller_enabled();
-  snapshot.feed_enabled_plus = channel_.feed_enabled(1.0);
-  snapshot.feed_enabled_minus = channel_.feed_enabled(-1.0);
+  const uint32_t control = channel_.ref().PlcToNc.ControlDWord;
+  snapshot.controller_enabled = plc::test_bit(control, plc::kControlEnable);
+  snapshot.feed_enabled_plus = plc::test_bit(control, plc::kControlFeedEnablePlus);
+  snapshot.feed_enabled_minus = plc::test_bit(control, plc::kControlFeedEnableMinus);
 }
 
 void ServoAxis::check_enables() noexcept {
