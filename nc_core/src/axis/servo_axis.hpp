@@ -81,7 +81,8 @@ class ServoAxis {
   void reset_error() noexcept;
 
   // --- override.cpp (B3 override, seed 000 §2.2) ---
-  // Step a': PlcToNc.Override into the job; above 1'000'000 it is not taken (warning 0x4238).
+  // Phase a, first: PlcToNc.Override into the job; above 1'000'000 it is not taken (warning
+  // 0x4238).
   void read_override() noexcept;
   // The velocity level the override gives: the user's V (types 2, 4) or the level reduced at the
   // start (types 1, 3), times the override.
@@ -98,7 +99,7 @@ class ServoAxis {
                   bool& final) noexcept;
 
   // --- online_change.cpp (B4-B6 stop rules, new end position, new velocity; seed 000 §2.2-2.4)
-  // Step b': the override and a due new velocity act on the running job.
+  // Phase a, last: the override and a due new velocity act on the running job.
   void run_online_functions() noexcept;
   // A Halt or Stop runs or MC_Stop's lock is held: new-position functions are refused.
   bool stop_active() const noexcept;
