@@ -83,7 +83,6 @@ Start motion_start(plc::CommandType type, const MotionInputs& inputs) noexcept {
   start.command.jerk = inputs.jerk;
   start.command.direction = inputs.direction;
   start.command.buffer_mode = inputs.buffer_mode;
-  start.command.mode = inputs.buffer_mode;
   return start;
 }
 

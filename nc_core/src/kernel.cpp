@@ -1,5 +1,7 @@
 #include "nc_core/kernel.hpp"
 
+#include <algorithm>
+#include <span>
 #include <string>
 #include <utility>
 
@@ -7,10 +9,11 @@
 
 #include "axis/servo_axis.hpp"
 #include "nc_core/config.hpp"
+#include "nc_core/profile.hpp"
 
 namespace nc {
 
-Kernel::Kernel(KernelConfig config) : config_(config) {
+Kernel::Kernel(KernelConfig config) : config_(config), scratch_(std::make_unique<Profile>()) {
   validate(config_);
 }
 
@@ -44,7 +47,12 @@ plc::AXIS_REF& Kernel::add_axis(const AxisConfig& config) {
     }
   }
   axes_.reserve(axes_.size() + 1);
-  axes_.push_back(std::make_unique<detail::ServoAxis>(effective, config_.cycle_time, axes_.size()));
+  snapshots_.reserve(axes_.size() + 1);
+  auto axis =
+      std::make_unique<detail::ServoAxis>(effective, config_.cycle_time, axes_.size(), *scratch_);
+  couplings_.add_axis();
+  snapshots_.emplace_back();
+  axes_.push_back(std::move(axis));
   return axes_.back()->ref();
 }
 
@@ -70,9 +78,36 @@ const AxisConfig& Kernel::config(std::string_view name) const {
 
 void Kernel::cycle() noexcept {
   const uint64_t counter = cycles_ + 1;
-  for (const auto& a : axes_)
-    a->cycle(counter);
+  const std::size_t n = axes_.size();
+  // Without couplings no axis reads another, so the phases run over a block of kBlockAxes axes
+  // before the next block: one block's data stays in the cache from phase (a) to (f). With
+  // couplings the block is the whole kernel (a group reaction needs all its members' errors).
+  const std::size_t block = couplings_.has_couplings() ? n : kBlockAxes;
+  for (std::size_t first = 0; first < n; first += block)
+    run_phases(first, std::min(n, first + block), counter);
   cycles_ = counter;
+}
+
+void Kernel::run_phases(std::size_t first, std::size_t last, uint64_t counter) noexcept {
+  const std::span<const uint32_t> order = couplings_.order();
+  // (a) commands: mailbox, enables, override and the online functions.
+  for (std::size_t i = first; i < last; ++i)
+    axes_[i]->phase_commands();
+  // (b) set values, every master before its slaves (index order while nothing is coupled).
+  for (std::size_t k = first; k < last; ++k) {
+    const uint32_t i = order[k];
+    axes_[i]->phase_set_values(snapshots_[i]);
+  }
+  // (c) couplings that act on drive positions: none until HLI coupling lands.
+  // (d) position control, drive and encoder.
+  for (std::size_t i = first; i < last; ++i)
+    axes_[i]->phase_drive(snapshots_[i]);
+  // (e) monitors and error handling, then the group reactions (no groups without couplings).
+  for (std::size_t i = first; i < last; ++i)
+    axes_[i]->phase_monitors(snapshots_[i]);
+  // (f) publish.
+  for (std::size_t i = first; i < last; ++i)
+    axes_[i]->phase_publish(counter);
 }
 
 }  // namespace nc

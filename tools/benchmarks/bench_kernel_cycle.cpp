@@ -1,4 +1,4 @@
-// One NC cycle with 1, 64 and 1024 moving axes (issue 2's benchmark). Reported as the counter
+// One NC cycle with 1, 64, 1024 and 4096 moving axes (issue 2's benchmark). Reported as the counter
 // per_axis_cycle: the time of one Kernel::cycle (and, in the *WithBlocks variant, of the axes'
 // MC_Power and MC_MoveAbsolute calls) divided by the number of axes, in seconds, printed with an
 // SI prefix ("45n" = 45 ns).
@@ -106,7 +106,7 @@ void BM_KernelCycleWithBlocks(benchmark::State& state) {
 
 }  // namespace
 
-BENCHMARK(BM_KernelCycle)->Arg(1)->Arg(64)->Arg(1024);
-BENCHMARK(BM_KernelCycleWithBlocks)->Arg(1)->Arg(64)->Arg(1024);
+BENCHMARK(BM_KernelCycle)->Arg(1)->Arg(64)->Arg(1024)->Arg(4096);
+BENCHMARK(BM_KernelCycleWithBlocks)->Arg(1)->Arg(64)->Arg(1024)->Arg(4096);
 
 BENCHMARK_MAIN();

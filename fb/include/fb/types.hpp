@@ -1,34 +1,31 @@
 // Enumerations of the PLCopen / Tc2_MC2 block inputs, with Tc2_MC2's names and values.
 //
 // They are the values a PLC programmer types (MC_Positive_Direction, MC_Aborting); blocks pass
-// them to the NC unchanged in plc::Command (direction, mode), so the numbers are part of the
-// PLC↔NC contract and must not be renumbered.
+// them to the NC unchanged in plc::Command (direction, mode, buffer_mode). They are defined once
+// in the contract (plc_interface/command.hpp) and re-exported here under their fb names.
 #pragma once
 
-#include <cstdint>
+#include "plc_interface/command.hpp"
 
 namespace fb {
 
-enum MC_Direction : int32_t {
-  MC_Positive_Direction = 1,
-  MC_Shortest_Way = 2,
-  MC_Negative_Direction = 3,
-  MC_Current_Direction = 4,
-  MC_Undefined_Direction = 128,
-};
+using plc::MC_Current_Direction;
+using plc::MC_Direction;
+using plc::MC_Negative_Direction;
+using plc::MC_Positive_Direction;
+using plc::MC_Shortest_Way;
+using plc::MC_Undefined_Direction;
 
-enum E_PositionType : int32_t {
-  POSITIONTYPE_ABSOLUTE = 1,
-  POSITIONTYPE_RELATIVE = 2,
-};
+using plc::E_PositionType;
+using plc::POSITIONTYPE_ABSOLUTE;
+using plc::POSITIONTYPE_RELATIVE;
 
-enum MC_BufferMode : int32_t {
-  MC_Aborting = 0,
-  MC_Buffered = 1,
-  MC_BlendingLow = 2,
-  MC_BlendingPrevious = 3,
-  MC_BlendingNext = 4,
-  MC_BlendingHigh = 5,
-};
+using plc::MC_Aborting;
+using plc::MC_BlendingHigh;
+using plc::MC_BlendingLow;
+using plc::MC_BlendingNext;
+using plc::MC_BlendingPrevious;
+using plc::MC_Buffered;
+using plc::MC_BufferMode;
 
 }  // namespace fb

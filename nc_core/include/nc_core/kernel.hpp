@@ -20,9 +20,13 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "nc_core/axis_config.hpp"
+#include "nc_core/axis_snapshot.hpp"
+#include "nc_core/coupling_graph.hpp"
 #include "plc_interface/axis_ref.hpp"
 
 namespace nc {
+
+class Profile;
 
 namespace detail {
 class ServoAxis;
@@ -57,8 +61,15 @@ class Kernel {
   const AxisConfig& config(std::string_view name) const;
   const KernelConfig& kernel_config() const noexcept { return config_; }
 
-  // Cycle function: one NC cycle for every axis.
+  // Cycle function: one NC cycle, phase by phase over all axes (docs/architecture.md "One
+  // tick"): commands, set values (masters before slaves), couplings on drive positions, position
+  // control + drive + encoder, monitors and errors then group reactions, publish.
   void cycle() noexcept;
+
+  // What axis `index` published to the other axes in the last cycle. Unchecked index.
+  const AxisSnapshot& snapshot(std::size_t index) const noexcept { return snapshots_[index]; }
+  // Who follows whom (empty until coupling lands).
+  const CouplingGraph& couplings() const noexcept { return couplings_; }
 
   double cycle_time() const noexcept { return config_.cycle_time; }
   // Completed NC cycles since the kernel was made.
@@ -67,10 +78,20 @@ class Kernel {
   double time() const noexcept { return static_cast<double>(cycles_) * config_.cycle_time; }
 
  private:
+  // Axes per block of the phase loops while nothing is coupled (see cycle()).
+  static constexpr std::size_t kBlockAxes = 32;
+
   detail::ServoAxis& find(std::string_view name) const;
+  // Phases (a) … (f) over axes [first, last) of the set-value order.
+  void run_phases(std::size_t first, std::size_t last, uint64_t counter) noexcept;
 
   KernelConfig config_;
   std::vector<std::unique_ptr<detail::ServoAxis>> axes_;
+  std::vector<AxisSnapshot> snapshots_;
+  CouplingGraph couplings_;
+  // One planning scratch profile for all axes (a start plans here first, so a refusal changes
+  // nothing); on the heap so that its address survives a move of the Kernel.
+  std::unique_ptr<Profile> scratch_;
   uint64_t cycles_ = 0;
 };
 

@@ -12,23 +12,21 @@ namespace {
 using plc::CommandState;
 using plc::CommandType;
 
-bool finite(double x) noexcept {
-  return std::isfinite(x);
-}
-
-// Velocity-move direction: +1 or MC_Positive_Direction (1) forward; -1 or
-// MC_Negative_Direction (3) backward (plc::Command documents both encodings). 0 = invalid.
+// Velocity-move direction: +1 or MC_Positive_Direction forward; -1 or MC_Negative_Direction
+// backward (plc::Command documents both encodings). 0 = invalid.
 double velocity_direction(int32_t direction) noexcept {
-  if (direction == 1) return 1.0;
-  if (direction == -1 || direction == 3) return -1.0;
+  if (direction == plc::MC_Positive_Direction) return 1.0;
+  if (direction == -1 || direction == plc::MC_Negative_Direction) return -1.0;
   return 0.0;
 }
 
 }  // namespace
 
 void ServoAxis::handle_commands() noexcept {
+  plc::CommandMailbox& mailbox = channel_.ref().Mailbox;
+  if (mailbox.pending() == 0) return;  // the steady case: no call into the mailbox
   plc::Command command;
-  while (ref_.Mailbox.take(command))
+  while (mailbox.take(command))
     handle(command);
 }
 
@@ -73,11 +71,11 @@ void ServoAxis::handle(const plc::Command& command) noexcept {
       reset_error();
       locked_ = false;
       end_external_generation();  // seed 000 §2.6: an axis reset switches it off
-      ref_.Mailbox.set_answer(command.number, CommandState::kDone);
+      channel_.answer(command.number, CommandState::kDone);
       return;
     case CommandType::kStopRelease:
       locked_ = false;
-      ref_.Mailbox.set_answer(command.number, CommandState::kDone);
+      channel_.answer(command.number, CommandState::kDone);
       return;
     default:
       // Coupling and homing come with later issues; until then the kernel refuses them by name.
@@ -85,13 +83,13 @@ void ServoAxis::handle(const plc::Command& command) noexcept {
       break;
   }
   if (code != ErrorCode::kNone) {
-    ref_.Mailbox.set_answer(command.number, CommandState::kError, plc::to_id(code));
+    channel_.answer(command.number, CommandState::kError, plc::to_id(code));
   }
 }
 
 ErrorCode ServoAxis::check_dynamics(const plc::Command& command, Limits& limits) const noexcept {
-  if (!finite(command.velocity) || !finite(command.acceleration) || !finite(command.deceleration) ||
-      !finite(command.jerk)) {
+  if (!std::isfinite(command.velocity) || !std::isfinite(command.acceleration) ||
+      !std::isfinite(command.deceleration) || !std::isfinite(command.jerk)) {
     return ErrorCode::kParameterNotFinite;
   }
   // Table 2 of seed 000 §2.1: V > 0, V <= Vmax, and not above the reference velocity.
@@ -109,16 +107,25 @@ ErrorCode ServoAxis::check_dynamics(const plc::Command& command, Limits& limits)
   return ErrorCode::kNone;
 }
 
-ErrorCode ServoAxis::start_position(const plc::Command& command) noexcept {
-  if (error_ != ErrorCode::kNone) return ErrorCode::kAxisInErrorState;
+ErrorCode ServoAxis::check_start(const plc::Command& command, bool has_position,
+                                 Limits& limits) const noexcept {
+  if (channel_.has_error()) return ErrorCode::kAxisInErrorState;
   if (locked_) return ErrorCode::kMotionCommandsLocked;
-  if (const ErrorCode code = check_start_with_superpositions(); code != ErrorCode::kNone) {
-    return code;
-  }
-  if (command.buffer_mode != 0) return ErrorCode::kBufferModeNotSupported;
-  if (!finite(command.position)) return ErrorCode::kPositionNotFinite;
+  // Seed 000 §2.6: external generation may join a running PTP motion (relative), "the opposite
+  // case is not permitted".
+  if (stack_.external().enabled()) return ErrorCode::kStartTypeNotAllowed;
+  if (command.buffer_mode != plc::MC_Aborting) return ErrorCode::kBufferModeNotSupported;
+  if (has_position && !std::isfinite(command.position)) return ErrorCode::kPositionNotFinite;
+  return check_dynamics(command, limits);
+}
+
+double ServoAxis::current_direction() const noexcept {
+  return set_.v > 0.0 ? 1.0 : (set_.v < 0.0 ? -1.0 : 0.0);
+}
+
+ErrorCode ServoAxis::start_position(const plc::Command& command) noexcept {
   Limits limits;
-  if (const ErrorCode code = check_dynamics(command, limits); code != ErrorCode::kNone) {
+  if (const ErrorCode code = check_start(command, true, limits); code != ErrorCode::kNone) {
     return code;
   }
   const double target =
@@ -128,42 +135,35 @@ ErrorCode ServoAxis::start_position(const plc::Command& command) noexcept {
 
 ErrorCode ServoAxis::start_to_target(uint16_t number, double target,
                                      const Limits& limits) noexcept {
-  if (!finite(target)) return ErrorCode::kPositionNotFinite;
+  if (!std::isfinite(target)) return ErrorCode::kPositionNotFinite;
   // Seed 000 §2.1 notes 4 and 5: the target must lie inside the software limits; where the axis
   // starts from does not matter, so a start from outside back into the range is allowed.
   if (monitors_.below_min(target) || monitors_.above_max(target)) {
     return ErrorCode::kTargetPositionNotAllowed;
   }
   const double distance = target - set_.p;
-  if (!controller_enabled() || !feed_enabled(distance)) {
+  if (!channel_.controller_enabled() || !channel_.feed_enabled(distance)) {
     return ErrorCode::kNoControllerOrFeedEnable;
   }
   const bool at_rest = set_.v == 0.0 && set_.a == 0.0;
   if (at_rest && (distance == 0.0 || std::abs(distance) < config_.encoder_increment)) {
     // Seed 000 §2.1: no start for a path shorter than one encoder increment — a warning.
-    warning_ = plc::to_id(ErrorCode::kMovementSmallerThanIncrement);
-    ref_.Mailbox.set_answer(number, CommandState::kDone);
+    channel_.warn(Warning::kMovementSmallerThanIncrement);
+    channel_.answer(number, CommandState::kDone);
     return ErrorCode::kNone;
   }
   return start_positioning(number, target, limits);  // override.cpp: the override applies
 }
 
 ErrorCode ServoAxis::start_velocity(const plc::Command& command) noexcept {
-  if (error_ != ErrorCode::kNone) return ErrorCode::kAxisInErrorState;
-  if (locked_) return ErrorCode::kMotionCommandsLocked;
-  if (const ErrorCode code = check_start_with_superpositions(); code != ErrorCode::kNone) {
-    return code;
-  }
-  if (command.buffer_mode != 0) return ErrorCode::kBufferModeNotSupported;
   Limits limits;
-  if (const ErrorCode code = check_dynamics(command, limits); code != ErrorCode::kNone) {
+  if (const ErrorCode code = check_start(command, false, limits); code != ErrorCode::kNone) {
     return code;
   }
-  double direction = velocity_direction(command.direction);
-  if (command.direction == 4) {
-    // MC_Current_Direction: the direction the axis moves in; at standstill there is none.
-    direction = set_.v > 0.0 ? 1.0 : (set_.v < 0.0 ? -1.0 : 0.0);
-  }
+  // MC_Current_Direction: the direction the axis moves in; at standstill there is none.
+  const double direction = command.direction == plc::MC_Current_Direction
+                               ? current_direction()
+                               : velocity_direction(command.direction);
   if (direction == 0.0) return ErrorCode::kDirectionInvalid;
   // Continuous motion has no target: refuse it only when it would run further out from (or
   // straight through) an enabled software limit it already stands on or beyond.
@@ -173,7 +173,7 @@ ErrorCode ServoAxis::start_velocity(const plc::Command& command) noexcept {
   if (direction < 0.0 && config_.sw_limit_min_enabled && set_.p <= config_.sw_limit_min) {
     return ErrorCode::kSoftLimitMinAtStart;
   }
-  if (!controller_enabled() || !feed_enabled(direction)) {
+  if (!channel_.controller_enabled() || !channel_.feed_enabled(direction)) {
     return ErrorCode::kNoControllerOrFeedEnable;
   }
   return start_continuous(command.number, direction * limits.velocity, limits);
@@ -181,16 +181,16 @@ ErrorCode ServoAxis::start_velocity(const plc::Command& command) noexcept {
 
 ErrorCode ServoAxis::start_halt_or_stop(const plc::Command& command) noexcept {
   const bool stop = command.type == CommandType::kStop;
-  if (error_ != ErrorCode::kNone) return ErrorCode::kAxisInErrorState;
+  if (channel_.has_error()) return ErrorCode::kAxisInErrorState;
   // A stop has priority and may replace a stop; a halt is a motion command and is locked out.
   if (!stop && locked_) return ErrorCode::kMotionCommandsLocked;
-  if (!stop && command.buffer_mode != 0) return ErrorCode::kBufferModeNotSupported;
-  if (!finite(command.deceleration) || !finite(command.jerk)) {
+  if (!stop && command.buffer_mode != plc::MC_Aborting) return ErrorCode::kBufferModeNotSupported;
+  if (!std::isfinite(command.deceleration) || !std::isfinite(command.jerk)) {
     return ErrorCode::kParameterNotFinite;
   }
   if (command.deceleration < 0.0) return ErrorCode::kDecelerationNotAllowed;
   if (command.jerk < 0.0) return ErrorCode::kJerkNotAllowed;
-  if (!controller_enabled()) return ErrorCode::kNoControllerOrFeedEnable;
+  if (!channel_.controller_enabled()) return ErrorCode::kNoControllerOrFeedEnable;
 
   // 0 = the running motion's deceleration and jerk, or the axis default when nothing runs.
   const bool motion =
@@ -208,7 +208,7 @@ ErrorCode ServoAxis::start_halt_or_stop(const plc::Command& command) noexcept {
     limits.jerk = command.jerk;
   }
   // Without the running compensation: it gets its compensation stop on top (seed 000 §2.5).
-  scratch_ = plan_stop(stop_start_state(), limits.deceleration, limits.jerk);
+  scratch_ = plan_stop(stack_.stop_start_state(set_), limits.deceleration, limits.jerk);
   if (!scratch_.ok()) return scratch_.error();
   accept(stop ? JobKind::kStop : JobKind::kHalt, command.number, scratch_, scratch_.final_state().p,
          0.0, limits);
@@ -220,25 +220,21 @@ ErrorCode ServoAxis::start_halt_or_stop(const plc::Command& command) noexcept {
 
 void ServoAxis::accept(JobKind kind, uint16_t number, const Profile& profile, double target,
                        double target_velocity, const Limits& limits) noexcept {
-  if (job_.active() && job_.number() != 0 && job_.number() == cmd_no_ &&
-      (cmd_state_ == CommandState::kActive || cmd_state_ == CommandState::kReached)) {
-    answer_current(CommandState::kAborted);
-  }
+  const uint16_t running = job_.active() ? job_.number() : 0;
   job_.start(kind, number, profile, target, target_velocity, limits);
-  superpositions_on_new_job(kind);
-  cmd_no_ = number;
-  answer_current(CommandState::kActive);
+  if (kind == JobKind::kHalt || kind == JobKind::kStop) {
+    stack_.on_stop();
+  } else {
+    fold_superpositions(CommandState::kAborted);
+  }
+  channel_.take_over(number, running);
   if (kind != JobKind::kVelocity) target_ = target;
   monitors_.reset_windows();
   if (kind == JobKind::kPosition || kind == JobKind::kVelocity) {
     has_been_stopped_ = false;
-    warning_ = 0;
+    // The override's warning stays while PlcToNc.Override is not taken (read_override()).
+    channel_.clear_warnings_except(Warning::kOverrideNotAllowed);
   }
-}
-
-void ServoAxis::answer_current(plc::CommandState state, uint32_t code) noexcept {
-  cmd_state_ = state;
-  ref_.Mailbox.set_answer(cmd_no_, state, code);
 }
 
 }  // namespace nc::detail

@@ -1,5 +1,7 @@
 #include "axis/drive.hpp"
 
+#include "axis/rounding.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -38,7 +40,7 @@ void Drive::follow(double position, double velocity, double acceleration) noexce
 
 double Drive::quantise(double p) const noexcept {
   if (increment_ <= 0.0) return p;
-  return std::round(p / increment_) * increment_;
+  return round_exact(p / increment_) * increment_;
 }
 
 void Drive::step(double command, bool enabled) noexcept {

@@ -21,7 +21,11 @@ namespace nc::detail {
 class ExternalSetpoint {
  public:
   // fb::E_PositionType values (seed 000 §2.6 "axis start types absolute (1) or relative (2)").
-  enum class Type : int32_t { kNone = 0, kAbsolute = 1, kRelative = 2 };
+  enum class Type : int32_t {
+    kNone = 0,
+    kAbsolute = plc::POSITIONTYPE_ABSOLUTE,
+    kRelative = plc::POSITIONTYPE_RELATIVE,
+  };
 
   struct Step {
     KinematicState state;     // the external set state (absolute) or offset (relative)

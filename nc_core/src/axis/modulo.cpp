@@ -33,31 +33,24 @@ constexpr double kMaxModuloTurns = 1'000'000.0;
 }  // namespace
 
 ErrorCode ServoAxis::start_modulo(const plc::Command& command) noexcept {
-  if (error_ != ErrorCode::kNone) return ErrorCode::kAxisInErrorState;
-  if (locked_) return ErrorCode::kMotionCommandsLocked;
-  if (const ErrorCode code = check_start_with_superpositions(); code != ErrorCode::kNone) {
-    return code;
-  }
-  if (command.buffer_mode != 0) return ErrorCode::kBufferModeNotSupported;
-  const double position = command.position;
-  if (!std::isfinite(position)) return ErrorCode::kPositionNotFinite;
   Limits limits;
-  if (const ErrorCode code = check_dynamics(command, limits); code != ErrorCode::kNone) {
+  if (const ErrorCode code = check_start(command, true, limits); code != ErrorCode::kNone) {
     return code;
   }
+  const double position = command.position;
   double direction = 0.0;
   switch (command.direction) {
-    case 1:  // MC_Positive_Direction
+    case plc::MC_Positive_Direction:
       direction = 1.0;
       break;
-    case 3:  // MC_Negative_Direction
+    case plc::MC_Negative_Direction:
       direction = -1.0;
       break;
-    case 4:  // MC_Current_Direction
-      direction = set_.v > 0.0 ? 1.0 : (set_.v < 0.0 ? -1.0 : 0.0);
+    case plc::MC_Current_Direction:
+      direction = current_direction();
       if (direction == 0.0) return ErrorCode::kDirectionInvalid;
       break;
-    case 2:  // MC_Shortest_Way: decided below
+    case plc::MC_Shortest_Way:  // decided below
       break;
     default:
       return ErrorCode::kDirectionInvalid;

@@ -39,15 +39,11 @@ namespace {
 // Seed 000 §2.4: "the set velocity is reduced iteratively 7-8 times".
 constexpr int kVelocityAttempts = 8;
 
-bool finite(double x) noexcept {
-  return std::isfinite(x);
-}
-
 }  // namespace
 
 void ServoAxis::run_online_functions() noexcept {
   // Only a running motion job: no override while a stop (Halt, Stop, error ramp) is active.
-  if (!controller_enabled() || error_ != ErrorCode::kNone || !job_.is_motion()) return;
+  if (!channel_.controller_enabled() || channel_.has_error() || !job_.is_motion()) return;
   bool replanned = false;
   Activation& activation = job_.activation();
   if (job_.kind() == JobKind::kPosition && activation.armed) {
@@ -71,31 +67,32 @@ ErrorCode ServoAxis::check_new_target(double target) const noexcept {
     return ErrorCode::kTargetPositionNotAllowed;
   }
   if (job_.kind() != JobKind::kPosition) return ErrorCode::kFunctionNotAllowed;
-  if (compensation_active()) return ErrorCode::kCompensationActive;  // seed 000 §2.3, §2.4
-  if (!controller_enabled() || !feed_enabled(target - basic_state().p)) {
+  if (stack_.compensation().running())
+    return ErrorCode::kCompensationActive;  // seed 000 §2.3, §2.4
+  if (!channel_.controller_enabled() || !channel_.feed_enabled(target - basic_state().p)) {
     return ErrorCode::kNoControllerOrFeedEnable;
   }
   return ErrorCode::kNone;
 }
 
 ErrorCode ServoAxis::new_position(const plc::Command& command) noexcept {
-  if (error_ != ErrorCode::kNone) return ErrorCode::kAxisInErrorState;
+  if (channel_.has_error()) return ErrorCode::kAxisInErrorState;
   if (stop_active()) return ErrorCode::kStopAlreadyActive;
-  if (!finite(command.position)) return ErrorCode::kPositionNotFinite;
+  if (!std::isfinite(command.position)) return ErrorCode::kPositionNotFinite;
   if (const ErrorCode code = check_new_target(command.position); code != ErrorCode::kNone) {
     return code;
   }
   if (!retarget(command.position, job_.user_velocity())) return ErrorCode::kPlannerNoSolution;
   job_.activation() = Activation{};  // an instantaneous-only request deletes a pending one
-  ref_.Mailbox.set_answer(command.number, plc::CommandState::kDone);
+  channel_.answer(command.number, plc::CommandState::kDone);
   return ErrorCode::kNone;
 }
 
 ErrorCode ServoAxis::new_position_and_velocity(const plc::Command& command) noexcept {
-  if (error_ != ErrorCode::kNone) return ErrorCode::kAxisInErrorState;
+  if (channel_.has_error()) return ErrorCode::kAxisInErrorState;
   if (stop_active()) return ErrorCode::kStopAlreadyActive;
-  if (!finite(command.position)) return ErrorCode::kPositionNotFinite;
-  if (!finite(command.velocity) || !finite(command.activation_position)) {
+  if (!std::isfinite(command.position)) return ErrorCode::kPositionNotFinite;
+  if (!std::isfinite(command.velocity) || !std::isfinite(command.activation_position)) {
     return ErrorCode::kParameterNotFinite;
   }
   if (command.velocity <= 0.0) return ErrorCode::kVelocityNotPositive;
@@ -131,7 +128,7 @@ ErrorCode ServoAxis::new_position_and_velocity(const plc::Command& command) noex
 
   if (!retarget(command.position, job_.user_velocity())) return ErrorCode::kPlannerNoSolution;
   job_.activation() = next;  // replaces (or, when not armed, deletes) a pending activation
-  ref_.Mailbox.set_answer(command.number, plc::CommandState::kDone);
+  channel_.answer(command.number, plc::CommandState::kDone);
   return ErrorCode::kNone;
 }
 
@@ -144,8 +141,7 @@ bool ServoAxis::retarget(double target, double velocity) noexcept {
   const double reduced = reduced_level(scratch_, velocity);
   const double direction = target >= from.p ? 1.0 : -1.0;
   const uint32_t override_value = job_.override_value();
-  const bool user = config_.override_type == 2 || config_.override_type == 4;
-  const double level = (user ? velocity : reduced) * override_factor(override_value);
+  const double level = override_level(velocity, reduced, override_value);
   bool final = true;
   if (override_value != plc::kOverrideFull && !plan_table(from, target, limits, level, final)) {
     return false;
@@ -187,7 +183,7 @@ bool ServoAxis::activate_velocity(double velocity) noexcept {
 
 void ServoAxis::install_table(double target, bool final, double level) noexcept {
   job_.replan(scratch_, final);
-  rebase_superpositions();  // planned from basic_state(): the held offset is in the table now
+  stack_.rebase();  // planned from basic_state(): the held offset is in the table now
   if (job_.kind() == JobKind::kPosition) {
     job_.set_target(target);
     target_ = target;

@@ -33,21 +33,20 @@ bool keeps_table_type(int override_type) noexcept {
 }  // namespace
 
 void ServoAxis::read_override() noexcept {
-  const uint32_t value = ref_.PlcToNc.Override;
-  const uint32_t not_allowed = plc::to_id(ErrorCode::kOverrideNotAllowed);
+  const uint32_t value = channel_.ref().PlcToNc.Override;
   if (value > plc::kOverrideFull) {
     // Not a percentage: not taken. The last valid value stays in force, the warning says why.
-    warning_ = not_allowed;
+    channel_.warn(Warning::kOverrideNotAllowed);
     return;
   }
-  if (warning_ == not_allowed) warning_ = 0;
+  channel_.clear_warning(Warning::kOverrideNotAllowed);
   job_.set_override(value);
 }
 
-double ServoAxis::override_level() const noexcept {
-  const double base =
-      user_velocity_type(config_.override_type) ? job_.user_velocity() : job_.reduced_velocity();
-  return base * override_factor(job_.override_value());
+double ServoAxis::override_level(double user_velocity, double reduced_velocity,
+                                 uint32_t override_value) const noexcept {
+  const double base = user_velocity_type(config_.override_type) ? user_velocity : reduced_velocity;
+  return base * override_factor(override_value);
 }
 
 bool ServoAxis::plan_table(const KinematicState& from, double target, const Limits& limits,
@@ -72,8 +71,7 @@ ErrorCode ServoAxis::start_positioning(uint16_t number, double target,
   const double reduced = reduced_level(scratch_, limits.velocity);
   const double direction = target >= set_.p ? 1.0 : -1.0;
   const uint32_t override_value = job_.override_value();
-  const double level = (user_velocity_type(config_.override_type) ? limits.velocity : reduced) *
-                       override_factor(override_value);
+  const double level = override_level(limits.velocity, reduced, override_value);
   bool final = true;
   if (override_value != plc::kOverrideFull && !plan_table(set_, target, limits, level, final)) {
     return scratch_.error();
@@ -81,9 +79,6 @@ ErrorCode ServoAxis::start_positioning(uint16_t number, double target,
   accept(JobKind::kPosition, number, scratch_, target, final ? direction * level : 0.0, limits);
   job_.set_levels(limits.velocity, reduced, direction);
   if (!final) job_.replan(scratch_, false);  // a start at override 0 waits at rest
-  if (ref_.PlcToNc.Override > plc::kOverrideFull) {
-    warning_ = plc::to_id(ErrorCode::kOverrideNotAllowed);  // accept() cleared it
-  }
   return ErrorCode::kNone;
 }
 
@@ -96,9 +91,6 @@ ErrorCode ServoAxis::start_continuous(uint16_t number, double velocity,
   if (!scratch_.ok()) return scratch_.error();
   accept(JobKind::kVelocity, number, scratch_, target_, direction * level, limits);
   job_.set_levels(speed, speed, direction);
-  if (ref_.PlcToNc.Override > plc::kOverrideFull) {
-    warning_ = plc::to_id(ErrorCode::kOverrideNotAllowed);
-  }
   return ErrorCode::kNone;
 }
 
@@ -107,7 +99,8 @@ void ServoAxis::apply_override() noexcept {
   // (seed 000 §2.1 "In case of failure, the function is not called again automatically").
   job_.set_handled_override(job_.override_value());
   const KinematicState from = basic_state();
-  const double level = override_level();
+  const double level =
+      override_level(job_.user_velocity(), job_.reduced_velocity(), job_.override_value());
   if (job_.kind() == JobKind::kVelocity) {
     scratch_ = plan_velocity(from, job_.direction() * level, job_.limits());
     if (scratch_.ok()) install_table(job_.target(), true, level);

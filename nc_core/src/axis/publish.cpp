@@ -2,6 +2,7 @@
 // values as TwinCAT / Tc2_MC2 number them).
 #include <cmath>
 
+#include "axis/rounding.hpp"
 #include "axis/servo_axis.hpp"
 
 namespace nc::detail {
@@ -9,19 +10,19 @@ namespace nc::detail {
 namespace {
 
 double modulo(double p, double factor) noexcept {
-  double m = p - factor * std::floor(p / factor);
+  double m = p - factor * floor_exact(p / factor);
   if (m >= factor || m < 0.0) m = 0.0;  // rounding at the period edge
   return m;
 }
 
 }  // namespace
 
-void ServoAxis::publish(uint64_t cycle_counter) noexcept {
+void ServoAxis::phase_publish(uint64_t cycle_counter) noexcept {
   using plc::AxisState;
-  plc::NCTOPLC_AXIS_REF& out = ref_.NcToPlc;
+  plc::NCTOPLC_AXIS_REF& out = channel_.ref().NcToPlc;
   const double actual = drive_.measured_position();
-  const bool enabled = controller_enabled();
-  const bool error = error_ != ErrorCode::kNone;
+  const bool enabled = channel_.controller_enabled();
+  const bool error = channel_.has_error();
   const JobKind kind = job_.kind();
 
   out.SetPos = set_.p;
@@ -36,15 +37,11 @@ void ServoAxis::publish(uint64_t cycle_counter) noexcept {
   out.ModuloSetPos = modulo(set_.p, config_.modulo_factor);
   out.TargetPos = target_;
   out.TargetVelo = job_.active() ? job_.target_velocity() : 0.0;
-  out.CompensationDistance = compensation_.done();  // travel-relative, as D
-  out.CompensationLength = compensation_.length();
-  out.CompensationVelocityDiff = compensation_.velocity_diff();
-  out.ErrorCode = plc::to_id(error_);
-  out.Warning = warning_;
-  out.CmdNo = cmd_no_;
-  out.CmdState = static_cast<uint16_t>(cmd_state_);
+  out.CompensationDistance = stack_.compensation().done();  // travel-relative, as D
+  out.CompensationLength = stack_.compensation().length();
+  out.CompensationVelocityDiff = stack_.compensation().velocity_diff();
+  channel_.publish(static_cast<int32_t>(index_));
   out.CoupleState = static_cast<uint32_t>(plc::CoupleState::kSingle);
-  out.AxisIndex = static_cast<int32_t>(index_);
   out.CycleCounter = static_cast<uint32_t>(cycle_counter);
 
   // Constant velocity: a velocity job at its level, or the cruise phase of a positioning.
@@ -53,26 +50,29 @@ void ServoAxis::publish(uint64_t cycle_counter) noexcept {
                                  (kind == JobKind::kPosition && !job_.generation_ended() &&
                                   set_.v != 0.0 && std::abs(set_.a) <= a_eps && set_jerk_ == 0.0);
 
+  // Bits or-ed in without branches (every bit starts at 0).
   uint32_t word = 0;
-  word = plc::with_bit(word, plc::kStateOperational, enabled && !error);
-  word = plc::with_bit(word, plc::kStateHomed, true);  // no homing yet: every axis counts as homed
-  word = plc::with_bit(word, plc::kStateNotMoving,
-                       std::abs(drive_.velocity()) < config_.standstill_window);
-  word = plc::with_bit(word, plc::kStateInPositionArea, monitors_.in_position_area());
-  word = plc::with_bit(word, plc::kStateInTargetPosition, monitors_.in_target_position());
-  word = plc::with_bit(word, plc::kStateHasBeenStopped, has_been_stopped_);
-  word = plc::with_bit(word, plc::kStateHasJob, job_.active());
-  word = plc::with_bit(word, plc::kStatePositiveDirection, set_.v > 0.0);
-  word = plc::with_bit(word, plc::kStateNegativeDirection, set_.v < 0.0);
-  word = plc::with_bit(word, plc::kStateConstantVelocity, constant_velocity);
-  word = plc::with_bit(word, plc::kStateCompensating, compensation_.running());
-  word = plc::with_bit(word, plc::kStateExtSetPointGenEnabled, external_.enabled());
-  word = plc::with_bit(word, plc::kStateContinuousMotion, kind == JobKind::kVelocity);
-  word = plc::with_bit(word, plc::kStatePtpMode, true);
-  word = plc::with_bit(word, plc::kStateSoftLimitMinExceeded, monitors_.below_min(actual));
-  word = plc::with_bit(word, plc::kStateSoftLimitMaxExceeded, monitors_.above_max(actual));
-  word = plc::with_bit(word, plc::kStateMotionCommandsLocked, locked_);
-  word = plc::with_bit(word, plc::kStateError, error);
+  const auto set_bit = [&word](plc::StateBit bit, bool value) noexcept {
+    word |= static_cast<uint32_t>(value) << bit;
+  };
+  set_bit(plc::kStateOperational, enabled && !error);
+  set_bit(plc::kStateHomed, true);  // no homing yet: every axis counts as homed
+  set_bit(plc::kStateNotMoving, std::abs(drive_.velocity()) < config_.standstill_window);
+  set_bit(plc::kStateInPositionArea, monitors_.in_position_area());
+  set_bit(plc::kStateInTargetPosition, monitors_.in_target_position());
+  set_bit(plc::kStateHasBeenStopped, has_been_stopped_);
+  set_bit(plc::kStateHasJob, job_.active());
+  set_bit(plc::kStatePositiveDirection, set_.v > 0.0);
+  set_bit(plc::kStateNegativeDirection, set_.v < 0.0);
+  set_bit(plc::kStateConstantVelocity, constant_velocity);
+  set_bit(plc::kStateCompensating, stack_.compensation().running());
+  set_bit(plc::kStateExtSetPointGenEnabled, stack_.external().enabled());
+  set_bit(plc::kStateContinuousMotion, kind == JobKind::kVelocity);
+  set_bit(plc::kStatePtpMode, true);
+  set_bit(plc::kStateSoftLimitMinExceeded, monitors_.below_min(actual));
+  set_bit(plc::kStateSoftLimitMaxExceeded, monitors_.above_max(actual));
+  set_bit(plc::kStateMotionCommandsLocked, locked_);
+  set_bit(plc::kStateError, error);
   out.StateDWord = word;
 
   // PLCopen state, in the priority of the PLCopen state diagram.

@@ -1,5 +1,6 @@
-// Steps b … e of the NC cycle for one axis: set values from the master job, position control,
-// drive and encoder, monitors, job completion and the axis error (SPEC A3, A4, A6).
+// The phases of the NC cycle for one axis (the kernel runs each over all axes): set values from
+// the master job, position control, drive and encoder, monitors, job completion and the axis error
+// (SPEC A3, A4, A6).
 #include "axis/servo_axis.hpp"
 
 #include <cmath>
@@ -8,8 +9,9 @@ namespace nc::detail {
 
 using plc::CommandState;
 
-ServoAxis::ServoAxis(const AxisConfig& config, double cycle_time, std::size_t index)
-    : config_(config), cycle_time_(cycle_time), index_(index) {
+ServoAxis::ServoAxis(const AxisConfig& config, double cycle_time, std::size_t index,
+                     Profile& scratch)
+    : config_(config), cycle_time_(cycle_time), index_(index), scratch_(scratch) {
   controller_.kv = config_.position_kv;
   controller_.feed_forward = config_.velocity_feed_forward;
   drive_.configure(config_, cycle_time_, 0.0);
@@ -17,35 +19,47 @@ ServoAxis::ServoAxis(const AxisConfig& config, double cycle_time, std::size_t in
   set_ = KinematicState{drive_.measured_position(), 0.0, 0.0};
   previous_set_position_ = set_.p;
   target_ = set_.p;
-  publish(0);
+  phase_publish(0);
 }
 
-bool ServoAxis::controller_enabled() const noexcept {
-  return plc::test_bit(ref_.PlcToNc.ControlDWord, plc::kControlEnable);
-}
-
-bool ServoAxis::feed_enabled(double direction) const noexcept {
-  if (direction > 0.0) return plc::test_bit(ref_.PlcToNc.ControlDWord, plc::kControlFeedEnablePlus);
-  if (direction < 0.0) {
-    return plc::test_bit(ref_.PlcToNc.ControlDWord, plc::kControlFeedEnableMinus);
-  }
-  return true;
-}
-
-void ServoAxis::cycle(uint64_t cycle_counter) noexcept {
+void ServoAxis::phase_commands() noexcept {
+  error_event_ = false;
   read_override();
   handle_commands();
   check_enables();
   run_online_functions();
+}
+
+void ServoAxis::phase_set_values(AxisSnapshot& snapshot) noexcept {
   generate_set_values();
+  snapshot.set_position = set_.p;
+  snapshot.set_velocity = set_.v;
+  snapshot.set_acceleration = set_.a;
+}
+
+void ServoAxis::phase_drive(AxisSnapshot& snapshot) noexcept {
   control_and_drive();
+  snapshot.set_position = set_.p;  // without the controller enable it follows the actual one
+  snapshot.set_velocity = set_.v;
+  snapshot.set_acceleration = set_.a;
+  snapshot.actual_position = drive_.measured_position();
+  snapshot.actual_velocity = drive_.velocity();
+  snapshot.actual_acceleration = drive_.acceleration();
+}
+
+void ServoAxis::phase_monitors(AxisSnapshot& snapshot) noexcept {
   run_monitors();
   finish_job();
-  publish(cycle_counter);
+  snapshot.error = channel_.error();
+  snapshot.error_event = error_event_;
+  const uint32_t control = channel_.ref().PlcToNc.ControlDWord;
+  snapshot.controller_enabled = plc::test_bit(control, plc::kControlEnable);
+  snapshot.feed_enabled_plus = plc::test_bit(control, plc::kControlFeedEnablePlus);
+  snapshot.feed_enabled_minus = plc::test_bit(control, plc::kControlFeedEnableMinus);
 }
 
 void ServoAxis::check_enables() noexcept {
-  if (!controller_enabled()) {
+  if (!channel_.controller_enabled()) {
     // Losing the controller enable during a job is an axis error; there is no ramp to run (the
     // drive is off), so the job ends here and the set values follow the actual position.
     if (job_.active() && job_.kind() != JobKind::kEmergencyStop) {
@@ -56,10 +70,10 @@ void ServoAxis::check_enables() noexcept {
   }
   // Feed enable removed in the direction of travel: the axis stops on its error ramp (also when
   // external setpoints move it).
-  if ((job_.is_motion() || external_.enabled()) && error_ == ErrorCode::kNone) {
-    if (set_.v > 0.0 && !feed_enabled(1.0)) {
+  if ((job_.is_motion() || stack_.external().enabled()) && !channel_.has_error()) {
+    if (set_.v > 0.0 && !channel_.feed_enabled(1.0)) {
       raise_error(ErrorCode::kFeedEnablePlusMissing);
-    } else if (set_.v < 0.0 && !feed_enabled(-1.0)) {
+    } else if (set_.v < 0.0 && !channel_.feed_enabled(-1.0)) {
       raise_error(ErrorCode::kFeedEnableMinusMissing);
     }
   }
@@ -67,24 +81,62 @@ void ServoAxis::check_enables() noexcept {
 
 void ServoAxis::generate_set_values() noexcept {
   previous_set_position_ = set_.p;
-  if (!controller_enabled()) {
+  if (!channel_.controller_enabled()) {
     set_jerk_ = 0.0;            // no generation: control_and_drive() makes the set position follow
     end_external_generation();  // seed 000 §2.6: the controller enable's edge switches it off
     return;
   }
-  if (job_.active()) {
-    base_ = job_.advance(cycle_time_);
-    set_jerk_ = job_.jerk();
-  } else if (compensation_.running() || external_.taking()) {
-    base_.v = 0.0;  // the basic motion holds; a superposition may still move the axis
-    base_.a = 0.0;
-    set_jerk_ = 0.0;
-  } else {
-    base_ = KinematicState{set_.p, 0.0, 0.0};  // the axis holds where it is
-    held_ = 0.0;
-    set_jerk_ = 0.0;
+  bool not_finite = false;
+  bool absolute_ended = false;
+  switch (source()) {
+    case SetValueSource::kPtpJob:
+      base_ = job_.advance(cycle_time_);
+      set_jerk_ = job_.jerk();
+      break;
+    case SetValueSource::kExternalAbsolute: {
+      const ExternalSetpoint::Step step =
+          stack_.external().take(channel_.ref().PlcToNc, cycle_time_);
+      base_ = step.state;
+      set_jerk_ = 0.0;
+      not_finite = step.not_finite;
+      absolute_ended = step.finished;
+      break;
+    }
+    case SetValueSource::kHold:
+      if (stack_.moves_alone()) {
+        base_.v = 0.0;  // the basic motion holds; a superposition may still move the axis
+        base_.a = 0.0;
+      } else {
+        base_ = KinematicState{set_.p, 0.0, 0.0};  // the axis holds where it is
+        stack_.drop_held();
+      }
+      set_jerk_ = 0.0;
+      break;
   }
-  superimpose();  // superposition.cpp: set_ = base_ + compensation + external setpoints
+  SuperpositionStack::Basic basic;
+  basic.state = base_;
+  basic.path_running = job_.active() && !job_.generation_ended();
+  basic.has_target = job_.active() && job_.kind() != JobKind::kVelocity;
+  basic.target = job_.target();
+  const SuperpositionStack::Result r =
+      stack_.superimpose(basic, channel_.ref().PlcToNc, channel_, cycle_time_);
+  set_ = r.set;
+  if (r.target_moved) target_ = r.target;
+  if (absolute_ended) {
+    base_ = KinematicState{set_.p, 0.0, 0.0};  // the last packet taken: the axis holds there
+    stack_.drop_held();
+  }
+  // A packet with NaN or inf is not taken; the axis must not run on it (SPEC B8).
+  if (not_finite || r.not_finite) raise_error(ErrorCode::kParameterNotFinite);
+}
+
+SetValueSource ServoAxis::source() const noexcept {
+  if (job_.active()) return SetValueSource::kPtpJob;
+  const ExternalSetpoint& external = stack_.external();
+  if (external.taking() && external.type() == ExternalSetpoint::Type::kAbsolute) {
+    return SetValueSource::kExternalAbsolute;
+  }
+  return SetValueSource::kHold;
 }
 
 void ServoAxis::control_and_drive() noexcept {
@@ -93,7 +145,7 @@ void ServoAxis::control_and_drive() noexcept {
     drive_.follow(set_.p, set_.v, set_.a);
     return;
   }
-  if (!controller_enabled()) {
+  if (!channel_.controller_enabled()) {
     // TwinCAT: without controller enable the drive is off and the set position follows the
     // actual position, so there is no following error to jump at when the enable returns.
     drive_.step(0.0, false);
@@ -108,13 +160,13 @@ void ServoAxis::control_and_drive() noexcept {
 
 void ServoAxis::run_monitors() noexcept {
   const double actual = drive_.measured_position();
-  const bool armed = controller_enabled() && error_ == ErrorCode::kNone;
+  const bool armed = channel_.controller_enabled() && !channel_.has_error();
   if (monitors_.following_error(set_.p - actual, armed)) {
     raise_error(ErrorCode::kFollowingErrorPosition);
   }
   // Software limits during motion: the set position passes an enabled limit while it moves
   // outward. Moving back in from outside (seed 000 §2.1 note 5) is not an error.
-  if (error_ == ErrorCode::kNone && job_.active() && job_.kind() != JobKind::kEmergencyStop) {
+  if (!channel_.has_error() && job_.active() && job_.kind() != JobKind::kEmergencyStop) {
     if (set_.v > 0.0 && monitors_.above_max(set_.p)) {
       raise_error(ErrorCode::kSoftLimitMaxDuringMotion);
     } else if (set_.v < 0.0 && monitors_.below_min(set_.p)) {
@@ -125,7 +177,7 @@ void ServoAxis::run_monitors() noexcept {
   // generator (seed 000 §2.6) is not feeding a motion (direction ±1), so a fed motion passing
   // through its target window is not "in target position".
   const bool settled =
-      controller_enabled() && !external_.moving() &&
+      channel_.controller_enabled() && !stack_.external().moving() &&
       (!job_.active() || (job_.kind() != JobKind::kVelocity && job_.generation_ended()));
   monitors_.windows(actual, target_, settled);
 }
@@ -137,19 +189,19 @@ void ServoAxis::finish_job() noexcept {
     case JobKind::kPosition:
       // Done = set-value generation ended and the target window reached (or switched off).
       if (job_.generation_ended() && monitors_.in_target_position()) {
-        answer_current(CommandState::kDone);
+        channel_.answer_current(CommandState::kDone);
         job_.clear();
       }
       break;
     case JobKind::kVelocity:
-      if (job_.velocity_reached() && cmd_state_ == CommandState::kActive) {
-        answer_current(CommandState::kReached);
+      if (job_.velocity_reached() && channel_.cmd_state() == CommandState::kActive) {
+        channel_.answer_current(CommandState::kReached);
       }
       break;
     case JobKind::kHalt:
     case JobKind::kStop:
       if (job_.generation_ended()) {
-        answer_current(CommandState::kDone);
+        channel_.answer_current(CommandState::kDone);
         job_.clear();
       }
       break;
@@ -160,16 +212,15 @@ void ServoAxis::finish_job() noexcept {
 }
 
 void ServoAxis::raise_error(ErrorCode code) noexcept {
-  if (error_ != ErrorCode::kNone) return;  // the first error stays until reset
-  error_ = code;
+  if (!channel_.raise(code)) return;  // the first error stays until reset
+  error_event_ = true;
   has_been_stopped_ = true;
-  if (job_.active() && job_.number() != 0 && job_.number() == cmd_no_ &&
-      (cmd_state_ == CommandState::kActive || cmd_state_ == CommandState::kReached)) {
-    answer_current(CommandState::kError, plc::to_id(code));
+  if (job_.active() && channel_.runs(job_.number())) {
+    channel_.answer_current(CommandState::kError, plc::to_id(code));
   }
   // The compensation fails with the axis; external generation is switched off (seed 000 §2.6).
   fold_superpositions(CommandState::kError, code);
-  if (!controller_enabled()) {
+  if (!channel_.controller_enabled()) {
     job_.clear();
     return;
   }
@@ -187,9 +238,9 @@ void ServoAxis::raise_error(ErrorCode code) noexcept {
 }
 
 void ServoAxis::reset_error() noexcept {
-  warning_ = 0;
-  if (error_ == ErrorCode::kNone) return;
-  error_ = ErrorCode::kNone;
+  channel_.clear_warnings();
+  if (!channel_.has_error()) return;
+  channel_.clear_error();
   if (!job_.active()) {
     // The axis holds where it stands: no following error is carried over into the next start.
     set_ = KinematicState{drive_.measured_position(), 0.0, 0.0};

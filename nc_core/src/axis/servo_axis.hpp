@@ -1,22 +1,27 @@
 // One continuous servo (or encoder) axis of the kernel: its cyclic interface, its master job,
 // position controller, drive, encoder and monitors (SPEC A3, A4, B1, B2).
 //
-// Split by concept over several files: commands.cpp (mailbox → validate → act → answer),
-// servo_axis.cpp (the cycle: set values, control, drive, monitors, errors), publish.cpp
-// (NcToPlc). The constructor is set-up (allocates the dead-time line); everything else runs in
-// the cycle: noexcept, no allocation.
+// The kernel runs each phase over all axes (docs/architecture.md "One tick"): phase_commands,
+// phase_set_values, phase_drive, phase_monitors, phase_publish. What the PLC side sees lives in
+// the AxisChannel; a start is planned into the kernel's one scratch profile. The constructor is
+// set-up (allocates the dead-time line); everything else runs in the cycle: noexcept, no
+// allocation.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 
+#include "axis/axis_channel.hpp"
 #include "axis/compensation.hpp"
 #include "axis/drive.hpp"
 #include "axis/external_setpoint.hpp"
 #include "axis/master_job.hpp"
 #include "axis/monitors.hpp"
 #include "axis/position_controller.hpp"
+#include "axis/set_value_source.hpp"
+#include "axis/superposition_stack.hpp"
 #include "nc_core/axis_config.hpp"
+#include "nc_core/axis_snapshot.hpp"
 #include "nc_core/profile.hpp"
 #include "plc_interface/axis_ref.hpp"
 
@@ -24,18 +29,20 @@ namespace nc::detail {
 
 class ServoAxis {
  public:
-  ServoAxis(const AxisConfig& config, double cycle_time, std::size_t index);
+  // `scratch`: the kernel's planning profile, shared by all its axes (one plans at a time).
+  ServoAxis(const AxisConfig& config, double cycle_time, std::size_t index, Profile& scratch);
 
-  plc::AXIS_REF& ref() noexcept { return ref_; }
-  const plc::AXIS_REF& ref() const noexcept { return ref_; }
+  plc::AXIS_REF& ref() noexcept { return channel_.ref(); }
+  const plc::AXIS_REF& ref() const noexcept { return channel_.ref(); }
   const AxisConfig& config() const noexcept { return config_; }
 
-  // One NC cycle of this axis (steps a … f of ARCHITECTURE "One tick").
-  void cycle(uint64_t cycle_counter) noexcept;
-
-  // A position compensation (MC_MoveSuperImposed) is running: new-position functions are refused
-  // meanwhile (seed 000 §2.5 note 9).
-  bool compensation_active() const noexcept { return compensation_.running(); }
+  // The phases of one NC cycle (steps a … f of docs/architecture.md "One tick"); the kernel
+  // calls each for every axis before the next. The snapshot is what other axes may read.
+  void phase_commands() noexcept;                          // (a)
+  void phase_set_values(AxisSnapshot& snapshot) noexcept;  // (b)
+  void phase_drive(AxisSnapshot& snapshot) noexcept;       // (d)
+  void phase_monitors(AxisSnapshot& snapshot) noexcept;    // (e)
+  void phase_publish(uint64_t cycle_counter) noexcept;     // (f)
 
  private:
   // --- commands.cpp ---
@@ -48,14 +55,23 @@ class ServoAxis {
   // enables, shorter than one increment), then start_positioning().
   ErrorCode start_to_target(uint16_t number, double target, const Limits& limits) noexcept;
   ErrorCode check_dynamics(const plc::Command& command, Limits& limits) const noexcept;
+  // The checks every motion start (MoveAbsolute/Relative/Modulo/Velocity) makes, in this order:
+  // axis error, MC_Stop lock, external generation enabled, buffer mode, Position finite (when
+  // `has_position`), then the dynamics into `limits`.
+  ErrorCode check_start(const plc::Command& command, bool has_position,
+                        Limits& limits) const noexcept;
+  // +1 / -1 while the set velocity has that sign, 0 at standstill (MC_Current_Direction).
+  double current_direction() const noexcept;
   // The new job replaces the running one: the replaced command is answered kAborted.
   void accept(JobKind kind, uint16_t number, const Profile& profile, double target,
               double target_velocity, const Limits& limits) noexcept;
-  void answer_current(plc::CommandState state, uint32_t code = 0) noexcept;
 
   // --- servo_axis.cpp ---
   void check_enables() noexcept;
+  // Step b: the basic source's set values, then the superposition stack on top.
   void generate_set_values() noexcept;
+  // The one basic source of this cycle (set_value_source.hpp).
+  SetValueSource source() const noexcept;
   void control_and_drive() noexcept;
   void run_monitors() noexcept;
   void finish_job() noexcept;
@@ -63,18 +79,15 @@ class ServoAxis {
   // on the emergency deceleration and jerk (SPEC A6). The first error is kept.
   void raise_error(ErrorCode code) noexcept;
   void reset_error() noexcept;
-  bool controller_enabled() const noexcept;
-  bool feed_enabled(double direction) const noexcept;
-
-  // --- publish.cpp ---
-  void publish(uint64_t cycle_counter) noexcept;
 
   // --- override.cpp (B3 override, seed 000 §2.2) ---
-  // Step a': PlcToNc.Override into the job; above 1'000'000 it is not taken (warning 0x4238).
+  // Phase a, first: PlcToNc.Override into the job; above 1'000'000 it is not taken (warning
+  // 0x4238).
   void read_override() noexcept;
-  // The velocity level the override gives for a job: V (types 2, 4) or the level reduced at the
+  // The velocity level the override gives: the user's V (types 2, 4) or the level reduced at the
   // start (types 1, 3), times the override.
-  double override_level() const noexcept;
+  double override_level(double user_velocity, double reduced_velocity,
+                        uint32_t override_value) const noexcept;
   // A positioning / velocity job planned from set_ with the override in force, then accept().
   ErrorCode start_positioning(uint16_t number, double target, const Limits& limits) noexcept;
   ErrorCode start_continuous(uint16_t number, double velocity, const Limits& limits) noexcept;
@@ -86,7 +99,7 @@ class ServoAxis {
                   bool& final) noexcept;
 
   // --- online_change.cpp (B4-B6 stop rules, new end position, new velocity; seed 000 §2.2-2.4)
-  // Step b': the override and a due new velocity act on the running job.
+  // Phase a, last: the override and a due new velocity act on the running job.
   void run_online_functions() noexcept;
   // A Halt or Stop runs or MC_Stop's lock is held: new-position functions are refused.
   bool stop_active() const noexcept;
@@ -107,63 +120,42 @@ class ServoAxis {
   // --- modulo.cpp (B1 modulo start, seed 000 §2.1) ---
   ErrorCode start_modulo(const plc::Command& command) noexcept;
 
-  // --- superposition.cpp (B7 position compensation, B8 external setpoints) ---
-  // set_ = base_ + held_ + the running compensation + the external offset (relative), or the
-  // external set values (absolute). Every new plan of the basic motion either starts from set_
-  // and then calls fold_superpositions() (accept() and raise_error() do: the superpositions end),
-  // or starts from basic_state() and then calls rebase_superpositions() (they go on).
+  // --- superposition.cpp (B7 position compensation, B8 external setpoints: their commands, and
+  // the stack's rules where the axis's basic state must follow) ---
   ErrorCode start_compensation(const plc::Command& command) noexcept;
   ErrorCode stop_compensation(const plc::Command& command) noexcept;
   ErrorCode enable_external(const plc::Command& command) noexcept;
   ErrorCode disable_external(const plc::Command& command) noexcept;
-  // A PTP start is refused while external setpoint generation is enabled (seed 000 §2.6).
-  ErrorCode check_start_with_superpositions() const noexcept;
-  // Step b, after the basic set values (base_) of this cycle: adds the superpositions into set_.
-  void superimpose() noexcept;
   // The set state without the running compensation and the external offset: where a replan of
   // the basic motion starts when the superpositions are to go on.
   KinematicState basic_state() const noexcept;
-  // Halt / Stop start here: set_ without the running compensation (which gets its compensation
-  // stop and goes on to the stop's end of path, seed 000 §2.5).
-  KinematicState stop_start_state() const noexcept;
-  // After job_.start() of a job planned from set_: the compensation ends (answered `state`, with
-  // `code` for kError), the external generation is switched off, the held offsets are dropped.
+  // A job planned from set_ starts: SuperpositionStack::fold(), and the basic motion is set_.
   void fold_superpositions(plc::CommandState state, ErrorCode code = ErrorCode::kNone) noexcept;
-  // After job_.start() of a job planned from basic_state(): the held offset is in the new job.
-  void rebase_superpositions() noexcept;
-  // accept(): which of the two above a new job of `kind` needs (Halt / Stop: compensation stop).
-  void superpositions_on_new_job(JobKind kind) noexcept;
   // Reset, or the controller enable gone: the external generation is switched off at once.
   void end_external_generation() noexcept;
-  void end_compensation(plc::CommandState state, uint32_t code = 0) noexcept;
 
   AxisConfig config_;
   double cycle_time_;
   std::size_t index_;
-  plc::AXIS_REF ref_{};
+  AxisChannel channel_{};
+  Profile& scratch_;  // a start is planned here first, so a refusal changes nothing
 
   MasterJob job_{};
-  Profile scratch_{};  // a start is planned here first, so a refusal changes nothing
   PositionController controller_{};
   Drive drive_{};
   Monitors monitors_{};
 
   KinematicState set_{};   // set values of this cycle (basic motion + superpositions)
-  KinematicState base_{};  // the basic motion's own set values (the master job's, or held)
-  double held_ = 0.0;      // offsets of ended superpositions, kept until the basic job changes
-  Compensation compensation_{};
-  ExternalSetpoint external_{};
+  KinematicState base_{};  // the basic source's own set values
+  SuperpositionStack stack_{};
   double set_jerk_ = 0.0;
   double previous_set_position_ = 0.0;
   double previous_measured_ = 0.0;
   double target_ = 0.0;  // end position of the last positioning / stop; window monitors use it
 
-  ErrorCode error_ = ErrorCode::kNone;
-  uint32_t warning_ = 0;
   bool locked_ = false;  // MC_Stop: motion commands refused until kStopRelease
   bool has_been_stopped_ = false;
-  uint16_t cmd_no_ = 0;  // the command the axis executes (or executed last)
-  plc::CommandState cmd_state_ = plc::CommandState::kFree;
+  bool error_event_ = false;  // an error was raised in this cycle
 };
 
 }  // namespace nc::detail

@@ -1,6 +1,6 @@
 // The superpositions of one axis: position compensation (seed 000 §2.5, SPEC B7) and external
 // setpoint generation (seed 000 §2.6, seed 001, SPEC B8) — their commands and their share of
-// step b of the NC cycle. The basic motion (the master job) gives base_; this file adds the rest.
+// the rules of the superposition stack as the axis applies them (superposition_stack.hpp).
 #include <cmath>
 
 #include "axis/servo_axis.hpp"
@@ -23,8 +23,8 @@ bool is_stop(JobKind kind) noexcept {
 ErrorCode ServoAxis::start_compensation(const plc::Command& command) noexcept {
   // Seed 000 §2.5 general notes 8, 4, 5 and the start parameters, in this order.
   if (config_.kind == AxisKind::kEncoder) return ErrorCode::kAxisKindNotAllowed;
-  if (error_ != ErrorCode::kNone) return ErrorCode::kAxisInErrorState;
-  if (compensation_.running()) return ErrorCode::kCompensationActive;  // no iteration
+  if (channel_.has_error()) return ErrorCode::kAxisInErrorState;
+  if (stack_.compensation().running()) return ErrorCode::kCompensationActive;  // no iteration
   if (is_stop(job_.kind())) return ErrorCode::kStopAlreadyActive;
   if (locked_) return ErrorCode::kMotionCommandsLocked;
   const ErrorCode parameters =
@@ -32,7 +32,7 @@ ErrorCode ServoAxis::start_compensation(const plc::Command& command) noexcept {
                           command.velocity, command.acceleration, command.deceleration);
   if (parameters != ErrorCode::kNone) return parameters;
   // A compensation superimposes a running basic motion; none beside external generation.
-  if (external_.enabled()) return ErrorCode::kFunctionNotAllowed;
+  if (stack_.external().enabled()) return ErrorCode::kFunctionNotAllowed;
   if (!job_.is_motion() || job_.generation_ended()) return ErrorCode::kFunctionNotAllowed;
 
   // The direction of travel, to which D refers.
@@ -50,48 +50,49 @@ ErrorCode ServoAxis::start_compensation(const plc::Command& command) noexcept {
     length = std::fmin(length, remaining);
   }
   // Planned into a copy first: a refusal leaves the published values of the last one alone.
-  Compensation planned_compensation = compensation_;
+  Compensation planned_compensation = stack_.compensation();
   const ErrorCode planned = planned_compensation.start(
       command.number, command.position, length, command.process_velocity, command.velocity,
       command.acceleration, command.deceleration, direction, std::abs(base_.v), cycle_time_);
   if (planned != ErrorCode::kNone) return planned;
   if (job_.kind() == JobKind::kPosition) {
     // Seed 000 §2.1 notes 4, 5: the compensated end must lie inside the software limits too.
-    const double end = job_.target() + held_ + planned_compensation.planned_offset();
+    const double end = job_.target() + stack_.held() + planned_compensation.planned_offset();
     if (monitors_.below_min(end) || monitors_.above_max(end)) {
       return ErrorCode::kTargetPositionNotAllowed;
     }
   }
-  compensation_ = planned_compensation;
-  ref_.Mailbox.set_answer(command.number, CommandState::kActive);
-  const uint32_t incomplete = plc::to_id(ErrorCode::kCompensationIncomplete);
-  if (warning_ == incomplete) warning_ = 0;  // a former compensation's warning
-  if (compensation_.planned_incomplete()) warning_ = incomplete;
+  stack_.compensation() = planned_compensation;
+  channel_.answer(command.number, CommandState::kActive);
+  channel_.clear_warning(Warning::kCompensationIncomplete);  // a former compensation's warning
+  if (stack_.compensation().planned_incomplete()) channel_.warn(Warning::kCompensationIncomplete);
   return ErrorCode::kNone;
 }
 
 ErrorCode ServoAxis::stop_compensation(const plc::Command& command) noexcept {
-  const ErrorCode code = compensation_.request_stop();
+  const ErrorCode code = stack_.compensation().request_stop();
   if (code != ErrorCode::kNone) return code;
-  ref_.Mailbox.set_answer(command.number, CommandState::kDone);
+  channel_.answer(command.number, CommandState::kDone);
   return ErrorCode::kNone;
 }
 
 ErrorCode ServoAxis::enable_external(const plc::Command& command) noexcept {
   // Seed 000 §2.6 "Activation": no axis error, controller and feed enables, not coupled (there
   // is no coupling yet); the start type must match one already active.
-  if (error_ != ErrorCode::kNone) return ErrorCode::kAxisInErrorState;
+  if (channel_.has_error()) return ErrorCode::kAxisInErrorState;
   if (!std::isfinite(command.position)) return ErrorCode::kPositionNotFinite;
   if (command.mode != static_cast<int32_t>(Type::kAbsolute) &&
       command.mode != static_cast<int32_t>(Type::kRelative)) {
     return ErrorCode::kStartTypeNotAllowed;
   }
   const Type type = static_cast<Type>(command.mode);
-  if (!controller_enabled() || !feed_enabled(1.0) || !feed_enabled(-1.0)) {
+  if (!channel_.controller_enabled() || !channel_.feed_enabled(1.0) ||
+      !channel_.feed_enabled(-1.0)) {
     return ErrorCode::kNoControllerOrFeedEnable;
   }
-  if (external_.taking() && external_.type() != type) return ErrorCode::kStartTypeNotAllowed;
-  if (compensation_.running()) return ErrorCode::kCompensationActive;
+  if (stack_.external().taking() && stack_.external().type() != type)
+    return ErrorCode::kStartTypeNotAllowed;
+  if (stack_.compensation().running()) return ErrorCode::kCompensationActive;
   if (is_stop(job_.kind())) return ErrorCode::kStopAlreadyActive;
   if (locked_) return ErrorCode::kMotionCommandsLocked;
   // Beside an internal motion only the relative type: two absolute sources cannot coexist.
@@ -99,148 +100,43 @@ ErrorCode ServoAxis::enable_external(const plc::Command& command) noexcept {
 
   double target = command.position;
   if (type == Type::kAbsolute) {
-    if (!external_.taking()) {
+    if (!stack_.external().taking()) {
       base_ = set_;  // the external set values take over from here
-      held_ = 0.0;
+      stack_.drop_held();
     }
-    external_.enable(type, set_, target, config_.ext_setpoint_delay);
+    stack_.external().enable(type, set_, target, config_.ext_setpoint_delay);
   } else {
     // Relative: the target refers to the internal generator's target (or position).
     const double reference =
-        job_.kind() == JobKind::kPosition ? job_.target() + held_ : basic_state().p;
+        job_.kind() == JobKind::kPosition ? job_.target() + stack_.held() : basic_state().p;
     target += reference;
-    external_.enable(type, KinematicState{}, target, config_.ext_setpoint_delay);
+    stack_.external().enable(type, KinematicState{}, target, config_.ext_setpoint_delay);
   }
   target_ = target;
   monitors_.reset_windows();
-  ref_.Mailbox.set_answer(command.number, CommandState::kDone);
+  channel_.answer(command.number, CommandState::kDone);
   return ErrorCode::kNone;
 }
 
 ErrorCode ServoAxis::disable_external(const plc::Command& command) noexcept {
-  external_.disable();  // disabling what is not enabled is not an error: nothing to do
-  ref_.Mailbox.set_answer(command.number, CommandState::kDone);
+  stack_.external().disable();  // disabling what is not enabled is not an error: nothing to do
+  channel_.answer(command.number, CommandState::kDone);
   return ErrorCode::kNone;
 }
 
-ErrorCode ServoAxis::check_start_with_superpositions() const noexcept {
-  // Seed 000 §2.6: external generation may join a running PTP motion (relative), "the opposite
-  // case is not permitted".
-  if (external_.enabled()) return ErrorCode::kStartTypeNotAllowed;
-  return ErrorCode::kNone;
-}
-
-// ---------------------------------------------------------------- the cycle
-
-void ServoAxis::superimpose() noexcept {
-  KinematicState total = base_;
-  total.p += held_;
-
-  if (compensation_.running()) {
-    const KinematicState extra = compensation_.advance(base_.v, base_.a, cycle_time_);
-    total.p += extra.p;
-    total.v += extra.v;
-    total.a += extra.a;
-    // Done when its time T is over; ended early by a compensation stop or when the basic
-    // motion's path ends first (seed 000 §2.5 notes 6 and 7).
-    if (compensation_.time_over()) {
-      end_compensation(compensation_.stop_requested() ? CommandState::kAborted
-                                                      : CommandState::kDone);
-    } else if (!job_.active() || job_.generation_ended()) {
-      end_compensation(CommandState::kAborted);
-    }
-  }
-  if ((compensation_.running() || held_ != 0.0) && job_.active() &&
-      job_.kind() != JobKind::kVelocity && !external_.taking()) {
-    // The superimposed distance moves the job's end (TargetPos, target window).
-    target_ =
-        job_.target() + held_ + (compensation_.running() ? compensation_.planned_offset() : 0.0);
-  }
-
-  bool not_finite = false;
-  if (external_.taking()) {
-    const ExternalSetpoint::Step step = external_.take(ref_.PlcToNc, cycle_time_);
-    not_finite = step.not_finite;
-    if (external_.type() == Type::kAbsolute) {
-      total = step.state;
-      set_jerk_ = 0.0;
-      if (step.finished) {
-        base_ = KinematicState{total.p, 0.0, 0.0};
-        held_ = 0.0;
-      }
-    } else {
-      total.p += step.state.p;
-      total.v += step.state.v;
-      total.a += step.state.a;
-      if (step.finished) held_ += step.state.p;
-    }
-  }
-  set_ = total;
-  // A packet with NaN or inf is not taken; the axis must not run on it (SPEC B8).
-  if (not_finite) raise_error(ErrorCode::kParameterNotFinite);
-}
+// ---------------------------------------------------------------- the stack's rules
 
 KinematicState ServoAxis::basic_state() const noexcept {
-  if (external_.taking() && external_.type() == Type::kAbsolute) return set_;
-  KinematicState state = base_;
-  state.p += held_;
-  return state;
-}
-
-KinematicState ServoAxis::stop_start_state() const noexcept {
-  KinematicState state = set_;
-  if (compensation_.running()) {
-    const KinematicState& extra = compensation_.state();
-    state.p -= extra.p;
-    state.v -= extra.v;
-    state.a -= extra.a;
-  }
-  return state;
-}
-
-void ServoAxis::end_compensation(plc::CommandState state, uint32_t code) noexcept {
-  held_ += compensation_.finish();
-  ref_.Mailbox.set_answer(compensation_.number(), state, code);
-  if (compensation_.incomplete()) warning_ = plc::to_id(ErrorCode::kCompensationIncomplete);
+  return stack_.basic_state(base_, set_);
 }
 
 void ServoAxis::fold_superpositions(plc::CommandState state, ErrorCode code) noexcept {
-  if (compensation_.running()) {
-    // Its offset so far is in set_, where the new job starts: nothing to hold.
-    compensation_.finish();
-    ref_.Mailbox.set_answer(compensation_.number(), state, plc::to_id(code));
-    if (compensation_.incomplete()) warning_ = plc::to_id(ErrorCode::kCompensationIncomplete);
-  }
-  external_.abort();
-  held_ = 0.0;
+  stack_.fold(channel_, state, code);
   base_ = set_;
 }
 
-void ServoAxis::rebase_superpositions() noexcept {
-  held_ = 0.0;
-}
-
-void ServoAxis::superpositions_on_new_job(JobKind kind) noexcept {
-  if (kind == JobKind::kHalt || kind == JobKind::kStop) {
-    // Planned from stop_start_state(): the held offset and the external offset are in the new
-    // job. A stop requests the compensation stop at the same time (seed 000 §2.5).
-    external_.abort();
-    held_ = 0.0;
-    if (compensation_.running()) (void)compensation_.request_stop();  // braking: goes on
-    return;
-  }
-  fold_superpositions(CommandState::kAborted);
-}
-
 void ServoAxis::end_external_generation() noexcept {
-  if (!external_.taking()) return;
-  if (external_.type() == Type::kRelative) {
-    held_ += external_.state().p;
-  } else {
-    base_ = KinematicState{set_.p, 0.0, 0.0};
-    held_ = 0.0;
-  }
-  external_.abort();
+  if (stack_.end_external()) base_ = KinematicState{set_.p, 0.0, 0.0};
 }
 
 }  // namespace nc::detail

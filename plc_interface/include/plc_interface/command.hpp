@@ -12,14 +12,39 @@
 
 namespace plc {
 
+// The enumerations of the PLCopen / Tc2_MC2 block inputs the NC reads from a Command, with
+// Tc2_MC2's names and values. Defined once here and used by name on both sides (fb/types.hpp
+// re-exports them); the numbers are part of the contract and must not be renumbered.
+enum MC_Direction : int32_t {
+  MC_Positive_Direction = 1,
+  MC_Shortest_Way = 2,
+  MC_Negative_Direction = 3,
+  MC_Current_Direction = 4,
+  MC_Undefined_Direction = 128,
+};
+
+enum E_PositionType : int32_t {
+  POSITIONTYPE_ABSOLUTE = 1,
+  POSITIONTYPE_RELATIVE = 2,
+};
+
+enum MC_BufferMode : int32_t {
+  MC_Aborting = 0,
+  MC_Buffered = 1,
+  MC_BlendingLow = 2,
+  MC_BlendingPrevious = 3,
+  MC_BlendingNext = 4,
+  MC_BlendingHigh = 5,
+};
+
 // What a command asks the NC to do. Values are stable: they appear in traces.
 enum class CommandType : uint16_t {
   kNone = 0,
   kReset = 1,                  // clear the axis error (MC_Reset)
   kMoveAbsolute = 2,           // position = target
   kMoveRelative = 3,           // position = distance
-  kMoveModulo = 4,             // position = modulo target, direction = fb::MC_Direction value
-  kMoveVelocity = 5,           // velocity (> 0), direction = +1 or -1 (or MC_Direction value)
+  kMoveModulo = 4,             // position = modulo target, direction = MC_Direction
+  kMoveVelocity = 5,           // velocity (> 0), direction = MC_Direction (or +1 / -1)
   kHalt = 6,                   // deceleration, jerk (0 = the running motion's)
   kStop = 7,                   // deceleration, jerk; locks motion commands until kStopRelease
   kStopRelease = 8,            // MC_Stop's Execute fell after Done: unlock
@@ -28,7 +53,7 @@ enum class CommandType : uint16_t {
   kMoveSuperImposed = 11,      // position = D, velocity = VK, acceleration = AK+,
                                // deceleration = AK-, process_velocity = VP, length = L
   kAbortSuperposition = 12,    // compensation stop
-  kExtSetPointGenEnable = 13,  // position = target for window monitoring, mode = position type
+  kExtSetPointGenEnable = 13,  // position = target for window monitoring, mode = E_PositionType
   kExtSetPointGenDisable = 14,
   kGearIn = 15,     // ratio, other_axis = master
   kGearInDyn = 16,  // ratio (initial), acceleration = AccBound, other_axis = master
@@ -61,10 +86,10 @@ struct Command {
   double process_velocity = 0.0;
   double length = 0.0;
   double ratio = 1.0;
-  int32_t direction = 0;
-  int32_t mode = 0;         // buffer mode for moves; position type; homing mode
-  int32_t other_axis = -1;  // kernel index of the partner axis (coupling master)
-  int32_t buffer_mode = 0;  // fb::MC_BufferMode value; 0 = aborting
+  int32_t direction = 0;              // MC_Direction (kMoveVelocity also +1 / -1)
+  int32_t mode = 0;                   // E_PositionType (kExtSetPointGenEnable); homing mode
+  int32_t other_axis = -1;            // kernel index of the partner axis (coupling master)
+  int32_t buffer_mode = MC_Aborting;  // MC_BufferMode of a move, halt or stop
 };
 
 // The NC's answer for one command number.

@@ -1,0 +1,29 @@
+// What one axis publishes to the other axes of its kernel in a cycle: the only thing one axis may
+// read of another (a slave its master's set values, a group its members' errors).
+//
+// Written by the kernel's phases as they go: the set values in the set-value phase (so a slave,
+// computed after its master, reads the master's values of the same cycle), the actual values in
+// the drive phase, error and enables in the monitor phase. Plain data.
+#pragma once
+
+#include <cstdint>
+
+#include "plc_interface/error_code.hpp"
+
+namespace nc {
+
+struct AxisSnapshot {
+  double set_position = 0.0;
+  double set_velocity = 0.0;
+  double set_acceleration = 0.0;
+  double actual_position = 0.0;
+  double actual_velocity = 0.0;
+  double actual_acceleration = 0.0;
+  plc::ErrorCode error = plc::ErrorCode::kNone;  // the axis's latched error
+  bool error_event = false;                      // the error was raised in this cycle
+  bool controller_enabled = false;
+  bool feed_enabled_plus = false;
+  bool feed_enabled_minus = false;
+};
+
+}  // namespace nc
