@@ -56,7 +56,8 @@ class AxisWatch {
       : base_velocity_(config.max_velocity),
         base_acceleration_(
             std::max({config.acceleration, config.deceleration, config.emergency_deceleration})),
-        delay_(config.ext_setpoint_delay) {
+        delay_(config.ext_setpoint_delay),
+        stop_jerk_(std::min(config.jerk, config.emergency_jerk)) {
     rest();
   }
 
@@ -73,10 +74,12 @@ class AxisWatch {
     velocity_ += vk;
     acceleration_ += std::max(ak_plus, ak_minus) + vk / vp * acceleration_;
   }
-  // A fed external setpoint packet, taken while external generation is on.
+  // A fed external setpoint packet, taken while external generation is on. The set state is the
+  // packet's, and a stop or the error ramp starts from it (kernel.hpp): with its acceleration a
+  // the jerk-limited stop first ramps a to 0, passing |v| + a² / (2 J) on the way.
   void allow_external(double v, double a) noexcept {
     if (!std::isfinite(v) || !std::isfinite(a)) return;
-    velocity_ += std::fabs(v) + std::fabs(a) * delay_;
+    velocity_ += std::fabs(v) + std::fabs(a) * delay_ + a * a / (2.0 * stop_jerk_);
     acceleration_ += std::fabs(a);
   }
 
@@ -186,6 +189,7 @@ class AxisWatch {
   double base_velocity_;
   double base_acceleration_;
   double delay_;
+  double stop_jerk_;
   double velocity_ = 0.0;
   double acceleration_ = 0.0;
 };

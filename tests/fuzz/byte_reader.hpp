@@ -7,10 +7,15 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 
 namespace fuzz {
+
+// Set by a target when the environment asks for a trace (FUZZ_TRACE=1): every number read is
+// printed, so a crashing input can be read as the program it is.
+inline bool g_trace = false;
 
 class ByteReader {
  public:
@@ -41,6 +46,13 @@ class ByteReader {
   // A double of a class picked by one tag byte; half of the classes are plausible values of
   // machine size (0.001 … 100000, either sign), the rest the classes that break numeric code.
   double number() noexcept {
+    const double x = draw();
+    if (g_trace) std::fprintf(stderr, " %.17g", x);
+    return x;
+  }
+
+ private:
+  double draw() noexcept {
     using L = std::numeric_limits<double>;
     const uint8_t tag = byte();
     const double sign = (tag & 0x80U) != 0 ? -1.0 : 1.0;
@@ -70,7 +82,6 @@ class ByteReader {
     }
   }
 
- private:
   const uint8_t* data_;
   std::size_t size_;
   std::size_t pos_ = 0;

@@ -14,6 +14,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -141,7 +142,9 @@ void set_motion(Block& b, fuzz::ByteReader& in) {
 
 // Sets one Execute block's inputs and toggles its Execute; tells the watch what it may allow.
 void edit_execute_block(AxisProgram& a, fuzz::AxisWatch& watch, fuzz::ByteReader& in) {
-  switch (in.below(kExecuteKinds)) {
+  const std::size_t kind = in.below(kExecuteKinds);
+  if (fuzz::g_trace) std::fprintf(stderr, " block %zu", kind);
+  switch (kind) {
     case 0:
       a.reset.Execute = !a.reset.Execute;
       break;
@@ -247,6 +250,11 @@ struct Program {
       if (region.allocations() != 0) fuzz::fail("allocation in the PLC calls or the NC cycle");
     }
     for (std::size_t i = 0; i < axes.size(); ++i) {
+      if (fuzz::g_trace) {
+        const plc::NCTOPLC_AXIS_REF& n = axes[i]->NcToPlc;
+        std::fprintf(stderr, "  [%d] axis %zu p %.9g v %.9g a %.9g err 0x%X cmd %u/%u\n", cycles, i,
+                     n.SetPos, n.SetVelo, n.SetAcc, n.ErrorCode, n.CmdNo, n.CmdState);
+      }
       if (const char* broken = watches[i].check(*axes[i])) {
         const plc::NCTOPLC_AXIS_REF& n = axes[i]->NcToPlc;
         std::fprintf(stderr,
@@ -270,6 +278,7 @@ nc::KernelConfig kernel_config(uint8_t b) {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
+  fuzz::g_trace = std::getenv("FUZZ_TRACE") != nullptr;
   fuzz::ByteReader in(data, size);
   Program p{nc::Kernel(kernel_config(in.byte())), {}, {}, {}, 0};
   const std::size_t n_axes = 1 + in.below(kMaxAxes);
@@ -288,7 +297,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
     const std::size_t axis_index = static_cast<std::size_t>(&a - p.programs.data());
     plc::AXIS_REF& axis = *p.axes[axis_index];
     fuzz::AxisWatch& watch = p.watches[axis_index];
-    switch (in.below(12)) {
+    const std::size_t op = in.below(12);
+    if (fuzz::g_trace) std::fprintf(stderr, "\nop %zu axis %zu:", op, axis_index);
+    switch (op) {
       case 0:
       case 1:
       case 2:
