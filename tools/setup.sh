@@ -16,6 +16,8 @@ requirements=(
   "nlohmann-json3-dev|/usr/include/nlohmann/json.hpp"
   "libbenchmark-dev|/usr/include/benchmark/benchmark.h"
   "clang-format|clang-format"
+  "clang-14|clang++-14"
+  "libfuzzer-14-dev|/usr/lib/llvm-14/lib/libFuzzer.a"
 )
 
 missing=()
