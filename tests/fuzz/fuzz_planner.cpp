@@ -1,8 +1,9 @@
 // fuzz_planner (issue 16): raw doubles into plan_position / plan_velocity (SPEC B2). Invariant:
 // the planner either refuses (ok() false with an error code) or returns a profile that is finite,
 // starts at the given state, keeps V, A+ / A- (path-relative) and J — a start outside the limits
-// only comes back inside them as fast as the limits allow — and ends exactly at the target (at
-// rest) or at the requested velocity. The checks are the planner tests' own
+// only comes back inside them as fast as the limits allow (where the start's acceleration makes
+// |v| pass V whatever is done, the unavoidable peak is the bound) — and ends exactly at the target
+// (at rest) or at the requested velocity. The checks are the planner tests' own
 // (tests/support/profile_checks.hpp), with their tolerances.
 #include <cmath>
 #include <cstddef>
@@ -27,6 +28,17 @@ bool valid_limits(const nc::Limits& l) {
 
 bool finite_state(const nc::KinematicState& s) {
   return std::isfinite(s.p) && std::isfinite(s.v) && std::isfinite(s.a);
+}
+
+// The limits a profile from `s` can keep (profile.hpp: a start outside the limits comes back
+// inside them as fast as the limits allow). Ramping a start acceleration a0 to 0 at J passes the
+// velocity v0 + a0·|a0| / (2 J) whatever the planner does: when that lies beyond V, V cannot be
+// kept and that peak is the bound instead.
+nc::Limits keepable_limits(const nc::KinematicState& s, const nc::Limits& l) {
+  nc::Limits k = l;
+  const double unavoidable = std::fabs(s.v + s.a * std::fabs(s.a) / (2.0 * l.jerk));
+  if (unavoidable > l.velocity) k.velocity = unavoidable * (1.0 + 1e-9);
+  return k;
 }
 
 // Relief for a start outside the limits, as the planner's own suites give it.
@@ -76,10 +88,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
     report(kind, start, goal, limits, "accepted invalid inputs");
   }
   // … and the profile keeps its contract.
-  const pc::StartRelief relief = relief_for(start, limits);
+  const nc::Limits keep = keepable_limits(start, limits);
+  const pc::StartRelief relief = relief_for(start, keep);
   const pc::Finding finding =
-      position ? pc::check_position_profile(profile, start, goal, limits, {}, relief)
-               : pc::check_velocity_profile(profile, start, goal, limits, {}, relief);
+      position ? pc::check_position_profile(profile, start, goal, keep, {}, relief)
+               : pc::check_velocity_profile(profile, start, goal, keep, {}, relief);
   if (!finding.ok()) report(kind, start, goal, limits, pc::to_string(finding));
   return 0;
 }
