@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <map>
 #include <random>
 #include <string>
@@ -33,6 +34,13 @@
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// CPU time of this thread: the NC cycle's own cost, without the time other processes took.
+double thread_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec) * 1e-9;
+}
 
 struct Options {
   uint64_t axis_cycles = 100'000'000;
@@ -170,9 +178,15 @@ class Soak {
                 static_cast<unsigned long long>(ticks_), axis_cycles, seconds_);
     std::printf("commands posted %ld, answered %ld (every one within 2 NC cycles)\n", posted,
                 answered);
-    std::printf("NC cycle (%zu axes): worst %.1f us, mean %.2f us (%.1f ns per axis-cycle)\n",
-                axes_.size(), worst_nc_ * 1e6, total_nc_ / static_cast<double>(ticks_) * 1e6,
-                total_nc_ / axis_cycles * 1e9);
+    std::printf(
+        "NC cycle (%zu axes), wall clock: worst %.1f us, mean %.2f us (%.1f ns per axis-cycle)\n",
+        axes_.size(), worst_nc_ * 1e6, total_nc_ / static_cast<double>(ticks_) * 1e6,
+        total_nc_ / axis_cycles * 1e9);
+    std::printf(
+        "NC cycle, thread CPU time (without preemption): worst %.1f us, mean %.2f us "
+        "(%.1f ns per axis-cycle)\n",
+        worst_nc_cpu_ * 1e6, total_nc_cpu_ / static_cast<double>(ticks_) * 1e6,
+        total_nc_cpu_ / axis_cycles * 1e9);
     std::printf("whole tick (PLC calls + NC cycle + checks): worst %.1f us, mean %.2f us\n",
                 worst_tick_ * 1e6, seconds_ / static_cast<double>(ticks_) * 1e6);
     std::printf("axis errors raised, by kind:");
@@ -183,9 +197,11 @@ class Soak {
       std::printf(" 0x%X x%llu", code, static_cast<unsigned long long>(n));
     std::printf("\nallocations in the cycle: 0; block output rules held at every call\n");
     if (broken_.empty()) std::printf("axis invariants: every one held at every cycle\n");
-    for (const auto& [what, n] : broken_)
-      std::printf("axis invariant broken: %s x%llu axis-cycles\n", what.c_str(),
+    for (const auto& [what, n] : broken_) {
+      std::printf("axis invariant broken: %s, %llu times (%llu axis-cycles)\n", what.c_str(),
+                  static_cast<unsigned long long>(break_events_.at(what)),
                   static_cast<unsigned long long>(n));
+    }
   }
 
   bool held() const { return broken_.empty(); }
@@ -288,6 +304,7 @@ class Soak {
       program(i);  // the random choices (outside the measured, allocation-checked region)
     const Clock::time_point t0 = Clock::now();
     double nc_seconds = 0.0;
+    double nc_cpu = 0.0;
     {
       const fuzz::AllocationRegion region;
       for (std::size_t i = 0; i < axes_.size(); ++i) {
@@ -306,7 +323,9 @@ class Soak {
         watches_[i].posted(axis);
       }
       const Clock::time_point n0 = Clock::now();
+      const double c0 = thread_cpu_seconds();
       kernel_.cycle();
+      nc_cpu = thread_cpu_seconds() - c0;
       nc_seconds = std::chrono::duration<double>(Clock::now() - n0).count();
       if (region.allocations() != 0) fuzz::fail("allocation in the PLC calls or the NC cycle");
     }
@@ -320,7 +339,10 @@ class Soak {
       count(a.halt, a.shown_error[4], tally_);
       count(a.stop, a.shown_error[5], tally_);
       count(a.new_pos, a.shown_error[6], tally_);
-      if (const char* broken = watches_[i].check(axis)) {
+      const char* broken = watches_[i].check(axis);
+      if (broken != nullptr && !in_break_[i]) ++break_events_[broken];
+      in_break_[i] = broken != nullptr;
+      if (broken != nullptr) {
         // A soak measures: a broken axis invariant is counted (the first ones printed with the
         // axis's last commands, to reproduce them) and the run goes on; the exit status says it.
         if (++broken_[broken] <= 3) {
@@ -350,6 +372,8 @@ class Soak {
     }
     const double tick_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
     worst_nc_ = std::max(worst_nc_, nc_seconds);
+    worst_nc_cpu_ = std::max(worst_nc_cpu_, nc_cpu);
+    total_nc_cpu_ += nc_cpu;
     worst_tick_ = std::max(worst_tick_, tick_seconds);
     total_nc_ += nc_seconds;
     ++ticks_;
@@ -363,13 +387,17 @@ class Soak {
   std::vector<fuzz::AxisWatch> watches_;
   std::vector<uint32_t> last_error_ = std::vector<uint32_t>(1024, 0);
   Tally tally_;
-  std::map<std::string, uint64_t> broken_;  // axis invariants broken, by what broke
+  std::map<std::string, uint64_t> broken_;        // axis-cycles with an invariant broken, by kind
+  std::map<std::string, uint64_t> break_events_;  // times it broke (runs of such cycles)
+  std::vector<bool> in_break_ = std::vector<bool>(1024, false);
   uint64_t ticks_ = 0;
   // SOAK_TRACE="AXIS,FROM": print that axis's image every NC cycle from cycle FROM on.
   std::size_t trace_axis_ = static_cast<std::size_t>(-1);
   uint64_t trace_from_ = 0;
   double worst_nc_ = 0.0;
   double worst_tick_ = 0.0;
+  double worst_nc_cpu_ = 0.0;
+  double total_nc_cpu_ = 0.0;
   double total_nc_ = 0.0;
   double seconds_ = 0.0;
 };
