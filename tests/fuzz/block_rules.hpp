@@ -7,6 +7,9 @@
 
 #include <cstdint>
 
+#include "fail.hpp"
+#include "plc_interface/axis_ref.hpp"
+
 namespace fuzz {
 
 template <class Block>
@@ -22,6 +25,13 @@ const char* broken_output_rule(const Block& b) noexcept {
   if (active && !b.Busy) return "Active without Busy";
   if (b.Error != (b.ErrorID != 0)) return "ErrorID does not go with Error";
   return nullptr;
+}
+
+// Calls the block once and crashes when an output rule breaks.
+template <class Block>
+void call_checked(Block& block, plc::AXIS_REF& axis) noexcept {
+  block(axis);
+  if (const char* broken = broken_output_rule(block)) fail(broken);
 }
 
 }  // namespace fuzz

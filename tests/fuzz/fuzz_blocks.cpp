@@ -98,31 +98,25 @@ fb::MC_Direction direction(fuzz::ByteReader& in) {
   return static_cast<fb::MC_Direction>(b < 200 ? 1 + b % 4 : static_cast<int8_t>(b));
 }
 
-template <class Block>
-void call(Block& block, plc::AXIS_REF& axis) {
-  block(axis);
-  if (const char* broken = fuzz::broken_output_rule(block)) fuzz::fail(broken);
-}
-
 // One PLC cycle of one axis: every block once, in a fixed order.
 void plc_cycle(AxisProgram& a, plc::AXIS_REF& axis) {
   a.power(axis);
-  call(a.reset, axis);
-  call(a.absolute, axis);
-  call(a.relative, axis);
-  call(a.modulo, axis);
-  call(a.velocity, axis);
-  call(a.halt, axis);
-  call(a.stop, axis);
+  fuzz::call_checked(a.reset, axis);
+  fuzz::call_checked(a.absolute, axis);
+  fuzz::call_checked(a.relative, axis);
+  fuzz::call_checked(a.modulo, axis);
+  fuzz::call_checked(a.velocity, axis);
+  fuzz::call_checked(a.halt, axis);
+  fuzz::call_checked(a.stop, axis);
   a.set_override(axis);
-  call(a.new_pos, axis);
-  call(a.new_pos_and_velo, axis);
-  call(a.superimposed, axis);
-  call(a.abort_superposition, axis);
-  call(a.ext_enable, axis);
-  call(a.ext_disable, axis);
+  fuzz::call_checked(a.new_pos, axis);
+  fuzz::call_checked(a.new_pos_and_velo, axis);
+  fuzz::call_checked(a.superimposed, axis);
+  fuzz::call_checked(a.abort_superposition, axis);
+  fuzz::call_checked(a.ext_enable, axis);
+  fuzz::call_checked(a.ext_disable, axis);
   for (auto& b : a.burst)
-    call(b, axis);
+    fuzz::call_checked(b, axis);
   if (a.feeding) {
     (void)fb::MC_ExtSetPointGenFeed(a.feed_p, a.feed_v, a.feed_a, a.feed_direction, axis);
   }

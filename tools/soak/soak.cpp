@@ -104,12 +104,6 @@ struct Tally {
   std::map<uint32_t, uint64_t> block_errors;
 };
 
-template <class Block>
-void call(Block& block, plc::AXIS_REF& axis) {
-  block(axis);
-  if (const char* broken = fuzz::broken_output_rule(block)) fuzz::fail(broken);
-}
-
 // Counts a block's Error when it appears (outside the allocation-checked region: the map grows).
 template <class Block>
 void count(const Block& block, bool& shown, Tally& tally) {
@@ -311,14 +305,14 @@ class Soak {
         AxisProgram& a = programs_[i];
         plc::AXIS_REF& axis = *axes_[i];
         a.power(axis);
-        call(a.reset, axis);
-        call(a.absolute, axis);
-        call(a.relative, axis);
-        call(a.velocity, axis);
-        call(a.halt, axis);
-        call(a.stop, axis);
+        fuzz::call_checked(a.reset, axis);
+        fuzz::call_checked(a.absolute, axis);
+        fuzz::call_checked(a.relative, axis);
+        fuzz::call_checked(a.velocity, axis);
+        fuzz::call_checked(a.halt, axis);
+        fuzz::call_checked(a.stop, axis);
         a.set_override(axis);
-        call(a.new_pos, axis);
+        fuzz::call_checked(a.new_pos, axis);
         a.axis_error(axis);
         watches_[i].posted(axis);
       }
