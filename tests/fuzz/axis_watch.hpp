@@ -3,7 +3,7 @@
 //  - every double of NcToPlc is finite;
 //  - |SetVelo| stays within the axis's max velocity and |SetAcc| within its largest acceleration
 //    limit (A+, A-, emergency deceleration), each widened only by what the PLC itself asked for
-//    and the kernel documents as allowed (kernel.hpp): accelerations / decelerations given to a
+//    and docs/behaviour.md documents as allowed: accelerations / decelerations given to a
 //    move, MC_Halt or MC_Stop; a compensation's VK and AK± on top of the basic motion (B7); the
 //    fed external set values (B8). The widening lasts until the axis rests again;
 //  - every command number posted is answered (leaves kPosted) within 2 NC cycles, its answer
@@ -75,8 +75,8 @@ class AxisWatch {
     acceleration_ += std::max(ak_plus, ak_minus) + vk / vp * acceleration_;
   }
   // A fed external setpoint packet, taken while external generation is on. The set state is the
-  // packet's, and a stop or the error ramp starts from it (kernel.hpp): with its acceleration a
-  // the jerk-limited stop first ramps a to 0, passing |v| + a² / (2 J) on the way.
+  // packet's, and a stop or the error ramp starts from it (docs/behaviour.md): with its
+  // acceleration a the jerk-limited stop first ramps a to 0, passing |v| + a² / (2 J) on the way.
   void allow_external(double v, double a) noexcept {
     if (!std::isfinite(v) || !std::isfinite(a)) return;
     velocity_ += std::fabs(v) + std::fabs(a) * delay_ + a * a / (2.0 * stop_jerk_);
