@@ -2,8 +2,10 @@
 # The whole test suite: set up, then
 #   1. a Release build with warnings as errors → ctest (every test, the install checks too);
 #   2. a build under AddressSanitizer + UndefinedBehaviorSanitizer → ctest again (tests that
-#      count allocations and the install checks are left out there).
-# Exits non-zero when a build or a test fails. The last line sums up both runs as
+#      count allocations and the install checks are left out there);
+#   3. the fuzz targets (tests/fuzz, clang-14 + libFuzzer): each runs NCSDK_FUZZ_SECONDS (60 s)
+#      from its seed corpus and replays its kept inputs, so that a regression shows.
+# Exits non-zero when a build or a test fails. The last line sums up the three runs as
 # "run_tests: N passed, M failed". No benchmarks.
 set -uo pipefail
 
@@ -39,6 +41,7 @@ run() {
 failed=0
 result_release="not run"
 result_sanitize="not run"
+result_fuzz="not run"
 
 run release "${root}/build-tests-release" -DCMAKE_BUILD_TYPE=Release -DNCSDK_WERROR=ON || failed=1
 
@@ -51,10 +54,31 @@ UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}" \
   -DCMAKE_BUILD_TYPE=Debug \
   "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g" || failed=1
 
-# Totals over both runs; a run that did not get to ctest counts as one failure.
+# The fuzz build holds only the libraries (instrumented) and the three targets; its CTest file
+# lives in tests/fuzz. The targets run one at a time: each uses a whole core for its 60 s.
+fuzz_build="${root}/build-tests-fuzz"
+echo "=== fuzz: configure and build (${fuzz_build}) ==="
+if ! cmake -S "${root}" -B "${fuzz_build}" -DCMAKE_CXX_COMPILER=clang++-14 -DNCSDK_FUZZ=ON \
+    -DNCSDK_BUILD_TESTS=OFF -DNCSDK_BUILD_SAMPLES=OFF -DNCSDK_BUILD_BENCHMARKS=OFF \
+    -DCMAKE_BUILD_TYPE=Release -DNCSDK_FUZZ_SECONDS="${NCSDK_FUZZ_SECONDS:-60}"; then
+  result_fuzz="configure failed"
+  failed=1
+elif ! cmake --build "${fuzz_build}" -j "${jobs}"; then
+  result_fuzz="build failed"
+  failed=1
+else
+  echo "=== fuzz: ctest (each target ${NCSDK_FUZZ_SECONDS:-60} s) ==="
+  fuzz_log="${fuzz_build}/ctest-summary.log"
+  ctest --test-dir "${fuzz_build}/tests/fuzz" --output-on-failure -j 1 | tee "${fuzz_log}"
+  [[ ${PIPESTATUS[0]} -eq 0 ]] || failed=1
+  summary="$(grep -E '[0-9]+% tests passed' "${fuzz_log}" | tail -n1)"
+  result_fuzz="${summary:-no ctest summary}"
+fi
+
+# Totals over the three runs; a run that did not get to ctest counts as one failure.
 total_passed=0
 total_failed=0
-for summary in "${result_release}" "${result_sanitize}"; do
+for summary in "${result_release}" "${result_sanitize}" "${result_fuzz}"; do
   if [[ "${summary}" =~ ([0-9]+)\ tests\ failed\ out\ of\ ([0-9]+) ]]; then
     total_failed=$((total_failed + BASH_REMATCH[1]))
     total_passed=$((total_passed + BASH_REMATCH[2] - BASH_REMATCH[1]))
@@ -66,8 +90,9 @@ done
 echo "=== summary ==="
 echo "release:   ${result_release}"
 echo "sanitize:  ${result_sanitize}"
+echo "fuzz:      ${result_fuzz}"
 if [[ ${failed} -eq 0 ]]; then
-  echo "run_tests: PASSED both runs (Release, then ASan+UBSan)"
+  echo "run_tests: PASSED all three runs (Release, ASan+UBSan, fuzz targets)"
 else
   echo "run_tests: FAILED (see above)"
 fi

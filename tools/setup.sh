@@ -17,6 +17,8 @@ requirements=(
   "libbenchmark-dev|/usr/include/benchmark/benchmark.h"
   "clang-format|clang-format"
   "chromium|chromium"
+  "clang-14|clang++-14"
+  "libfuzzer-14-dev|/usr/lib/llvm-14/lib/libFuzzer.a"
 )
 
 missing=()

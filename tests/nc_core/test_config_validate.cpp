@@ -46,7 +46,6 @@ const std::vector<DoubleField> kPositiveFields = {
 };
 
 const std::vector<DoubleField> kNonNegativeFields = {
-    {"position_kv", &nc::AxisConfig::position_kv},
     {"drive_time_constant", &nc::AxisConfig::drive_time_constant},
     {"drive_max_velocity", &nc::AxisConfig::drive_max_velocity},
     {"encoder_increment", &nc::AxisConfig::encoder_increment},
@@ -57,6 +56,7 @@ const std::vector<DoubleField> kNonNegativeFields = {
 const std::vector<DoubleField> kAllDoubleFields = [] {
   std::vector<DoubleField> all = kPositiveFields;
   all.insert(all.end(), kNonNegativeFields.begin(), kNonNegativeFields.end());
+  all.push_back({"position_kv", &nc::AxisConfig::position_kv});
   all.push_back({"velocity_feed_forward", &nc::AxisConfig::velocity_feed_forward});
   all.push_back({"drive_dead_time", &nc::AxisConfig::drive_dead_time});
   all.push_back({"sw_limit_min", &nc::AxisConfig::sw_limit_min});
@@ -172,6 +172,23 @@ TEST_CASE("velocity_feed_forward is a fraction 0 to 1", "[config]") {
     REQUIRE(e);
     CHECK(e->pointer() == "/velocity_feed_forward");
     CHECK(e->rule() == "must be in [0, 1]");
+  }
+}
+
+TEST_CASE("position_kv is 0 to 100 1/s (issue 16: 1.3e88 was accepted and overflowed)",
+          "[config]") {
+  for (const double ok : {0.0, 1.0, 100.0}) {
+    nc::AxisConfig c = named_axis();
+    c.position_kv = ok;
+    CHECK_NOTHROW(nc::validate(c));
+  }
+  for (const double bad : {-1.0, 100.5, 1.3e88}) {
+    nc::AxisConfig c = named_axis();
+    c.position_kv = bad;
+    const auto e = error_of([&] { nc::validate(c); });
+    REQUIRE(e);
+    CHECK(e->pointer() == "/position_kv");
+    CHECK(e->rule() == "must be in [0, 100]");
   }
 }
 

@@ -54,7 +54,7 @@ struct AxisConfig {
   int override_type = 3;         // 1 … 4, seed 000 §2.2
 
   // Position controller: v_cmd = feed_forward · v_set + kv · (p_set - p_act).
-  double position_kv = 1.0;            // 1/s (mm/s per mm), >= 0
+  double position_kv = 1.0;            // 1/s (mm/s per mm), 0 … 100
   double velocity_feed_forward = 1.0;  // 0 … 1 (fraction of the set velocity)
 
   // Drive model and encoder.

@@ -130,7 +130,9 @@ void visit_fields(Config& c, Visitor&& v) {
   v(FieldInfo{"override_type", "", "override type of seed 000 §2.2"}, c.override_type,
     IntRule{1, 4});
 
-  v(FieldInfo{"position_kv", "1/s", "position controller gain Kv"}, c.position_kv, kNonNegative);
+  // At most 100 1/s: Kv · T <= 1 for every NC cycle T <= 10 ms (Kv · T >= 2 is unstable).
+  v(FieldInfo{"position_kv", "1/s", "position controller gain Kv"}, c.position_kv,
+    closed_range(0.0, 100.0));
   v(FieldInfo{"velocity_feed_forward", "", "fraction of the set velocity fed forward"},
     c.velocity_feed_forward, closed_range(0.0, 1.0));
 

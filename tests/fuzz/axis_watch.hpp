@@ -1,0 +1,197 @@
+// The invariants of issue 16 on one axis, checked from the PLC side only (the public AXIS_REF),
+// shared by fuzz_blocks and the soak program (tools/soak):
+//  - every double of NcToPlc is finite;
+//  - |SetVelo| stays within the axis's max velocity and |SetAcc| within its largest acceleration
+//    limit (A+, A-, emergency deceleration), each widened only by what the PLC itself asked for
+//    and docs/behaviour.md documents as allowed: accelerations / decelerations given to a
+//    move, MC_Halt or MC_Stop; a compensation's VK and AK± on top of the basic motion (B7); the
+//    fed external set values (B8). The widening lasts until the axis rests again;
+//  - every command number posted is answered (leaves kPosted) within 2 NC cycles, its answer
+//    slot is never lost, the states only move forward (posted → active → reached → an outcome),
+//    and an outcome, once given, never changes.
+// check() returns nullptr or what broke. Fixed-size state: no allocation while checking.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+
+#include "nc_core/axis_config.hpp"
+#include "plc_interface/axis_ref.hpp"
+
+namespace fuzz {
+
+// The first NcToPlc double that is not finite, by name; nullptr when all are.
+inline const char* non_finite_field(const plc::NCTOPLC_AXIS_REF& n) noexcept {
+  struct Field {
+    const char* name;
+    double value;
+  };
+  const std::array<Field, 15> fields{{{"ActPos", n.ActPos},
+                                      {"ModuloActPos", n.ModuloActPos},
+                                      {"ActVelo", n.ActVelo},
+                                      {"ActAcc", n.ActAcc},
+                                      {"PosDiff", n.PosDiff},
+                                      {"SetPos", n.SetPos},
+                                      {"ModuloSetPos", n.ModuloSetPos},
+                                      {"SetVelo", n.SetVelo},
+                                      {"SetAcc", n.SetAcc},
+                                      {"SetJerk", n.SetJerk},
+                                      {"TargetPos", n.TargetPos},
+                                      {"TargetVelo", n.TargetVelo},
+                                      {"CompensationDistance", n.CompensationDistance},
+                                      {"CompensationLength", n.CompensationLength},
+                                      {"CompensationVelocityDiff", n.CompensationVelocityDiff}}};
+  for (const Field& f : fields) {
+    if (!std::isfinite(f.value)) return f.name;
+  }
+  return nullptr;
+}
+
+class AxisWatch {
+ public:
+  explicit AxisWatch(const nc::AxisConfig& config) noexcept
+      : base_velocity_(config.max_velocity),
+        base_acceleration_(
+            std::max({config.acceleration, config.deceleration, config.emergency_deceleration})),
+        delay_(config.ext_setpoint_delay),
+        stop_jerk_(std::min(config.jerk, config.emergency_jerk)) {
+    rest();
+  }
+
+  // --- PLC side, before the NC cycle: what the program asked for.
+  // A move, halt or stop with these dynamics (0 = axis default; invalid values are refused).
+  void allow_dynamics(double acceleration, double deceleration) noexcept {
+    widen_acceleration(acceleration);
+    widen_acceleration(deceleration);
+  }
+  // A compensation: VK on the velocity, AK± and VK's share of the basic acceleration (the
+  // extra velocity is scaled by |v| / VP) on the acceleration.
+  void allow_compensation(double vk, double ak_plus, double ak_minus, double vp) noexcept {
+    if (!usable(vk) || !usable(ak_plus) || !usable(ak_minus) || !usable(vp)) return;
+    velocity_ += vk;
+    acceleration_ += std::max(ak_plus, ak_minus) + vk / vp * acceleration_;
+  }
+  // A fed external setpoint packet, taken while external generation is on. The set state is the
+  // packet's, and a stop or the error ramp starts from it (docs/behaviour.md): with its
+  // acceleration a the jerk-limited stop first ramps a to 0, passing |v| + a² / (2 J) on the way.
+  void allow_external(double v, double a) noexcept {
+    if (!std::isfinite(v) || !std::isfinite(a)) return;
+    velocity_ += std::fabs(v) + std::fabs(a) * delay_ + a * a / (2.0 * stop_jerk_);
+    acceleration_ += std::fabs(a);
+  }
+
+  // --- After the PLC's calls of one cycle: the commands it posted (kernel drained the rest).
+  void posted(const plc::AXIS_REF& axis) noexcept {
+    const std::size_t now = axis.Mailbox.pending();
+    for (std::size_t i = pending_; i < now; ++i) {
+      ++posted_total_;
+      last_number_ = static_cast<uint16_t>(last_number_ + 1U);
+      if (last_number_ == 0) last_number_ = 1;
+      Tracked& t = tracked_[next_slot_];
+      next_slot_ = (next_slot_ + 1) % tracked_.size();
+      t = Tracked{last_number_, plc::CommandState::kPosted, 0, 0, true};
+    }
+    pending_ = now;
+  }
+
+  // --- After the NC cycle: the invariants. nullptr when all hold.
+  const char* check(const plc::AXIS_REF& axis) noexcept {
+    pending_ = axis.Mailbox.pending();
+    const plc::NCTOPLC_AXIS_REF& n = axis.NcToPlc;
+    if (non_finite_field(n) != nullptr) return "NcToPlc double not finite";
+    if (std::fabs(n.SetVelo) > velocity_ * (1.0 + 1e-9) + 1e-9) return "set velocity above limit";
+    if (std::fabs(n.SetAcc) > acceleration_ * (1.0 + 1e-6) + 1e-6) {
+      return "set acceleration above limit";
+    }
+    const bool resting = n.SetVelo == 0.0 && n.SetAcc == 0.0 &&
+                         !plc::test_bit(n.StateDWord, plc::kStateHasJob) &&
+                         !plc::test_bit(n.StateDWord, plc::kStateCompensating) &&
+                         !plc::test_bit(n.StateDWord, plc::kStateExtSetPointGenEnabled);
+    if (resting) rest();
+    return check_answers(axis.Mailbox);
+  }
+
+  long commands_posted() const noexcept { return posted_total_; }
+  long commands_answered() const noexcept { return answered_total_; }
+  double velocity_limit() const noexcept { return velocity_; }
+  double acceleration_limit() const noexcept { return acceleration_; }
+
+ private:
+  struct Tracked {
+    uint16_t number = 0;
+    plc::CommandState state = plc::CommandState::kFree;
+    uint32_t error_code = 0;
+    int age = 0;  // NC cycles since it was posted
+    bool live = false;
+  };
+
+  static bool usable(double x) noexcept { return std::isfinite(x) && x > 0.0; }
+  void widen_acceleration(double x) noexcept {
+    if (usable(x)) acceleration_ = std::max(acceleration_, x);
+  }
+  void rest() noexcept {
+    velocity_ = base_velocity_;
+    acceleration_ = base_acceleration_;
+  }
+
+  static int rank(plc::CommandState s) noexcept {
+    switch (s) {
+      case plc::CommandState::kFree:
+        return -1;
+      case plc::CommandState::kPosted:
+        return 0;
+      case plc::CommandState::kActive:
+        return 1;
+      case plc::CommandState::kReached:
+        return 2;
+      default:
+        return 3;  // an outcome
+    }
+  }
+
+  const char* check_answers(const plc::CommandMailbox& mailbox) noexcept {
+    for (Tracked& t : tracked_) {
+      if (!t.live) continue;
+      ++t.age;
+      const plc::CommandAnswer a = mailbox.answer(t.number);
+      if (a.state == plc::CommandState::kFree) return "a posted command's answer is lost";
+      if (a.state == plc::CommandState::kPosted && t.age >= 2) {
+        return "a command is not answered within 2 NC cycles";
+      }
+      const int before = rank(t.state);
+      const int after = rank(a.state);
+      if (after < before) return "a command's state went backwards";
+      if (before == 3 && (a.state != t.state || a.error_code != t.error_code)) {
+        return "a command was answered twice with different outcomes";
+      }
+      if (before < 1 && after >= 1) ++answered_total_;
+      t.state = a.state;
+      t.error_code = a.error_code;
+      // An outcome is watched for a few more cycles, then the slot is free for a new number.
+      if (after == 3 && t.age > kWatchOutcome) t.live = false;
+    }
+    return nullptr;
+  }
+
+  static constexpr int kWatchOutcome = 8;
+  // Fewer than CommandMailbox::kAnswerSlots: a tracked number's slot is never reused by a
+  // newer number while it is tracked (a block posts at most once per call).
+  std::array<Tracked, 48> tracked_{};
+  std::size_t next_slot_ = 0;
+  uint16_t last_number_ = 0;
+  std::size_t pending_ = 0;  // in the mailbox after the last NC cycle (0: all taken)
+  long posted_total_ = 0;
+  long answered_total_ = 0;
+
+  double base_velocity_;
+  double base_acceleration_;
+  double delay_;
+  double stop_jerk_;
+  double velocity_ = 0.0;
+  double acceleration_ = 0.0;
+};
+
+}  // namespace fuzz

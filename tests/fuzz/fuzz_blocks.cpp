@@ -1,0 +1,365 @@
+// fuzz_blocks (issue 16): the input bytes become a PLC program against the real kernel — 1 to 4
+// axes of assorted kinds, then a stream of operations: any block called with any inputs (NaN,
+// ±inf, huge, denormal, zero, negative and plausible values), Execute edges, enables and
+// override toggled (through MC_Power, MC_SetOverride and raw writes of PlcToNc.Override),
+// GearRatio1 written, external setpoint packets fed, bursts of more commands than the mailbox
+// holds, and faults injected: a feed enable or the controller enable lost, and axes whose drive
+// saturates at 50 mm/s so that a fast move runs into its following-error limit (0x4550).
+// Every PLC cycle calls every block of every axis once, then the NC cycle runs. Checked at every
+// cycle, each a crash when broken: the block output rules (block_rules.hpp) after every call, the
+// axis invariants (axis_watch.hpp: finite image, set velocity and acceleration within the limits,
+// every command answered within 2 cycles and never twice differently), and no allocation in the
+// PLC calls and the NC cycle. Only the public API is used (fb blocks, nc::Kernel, AXIS_REF).
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "allocation_count.hpp"
+#include "axis_watch.hpp"
+#include "block_rules.hpp"
+#include "byte_reader.hpp"
+#include "fail.hpp"
+#include "fb/fb.hpp"
+#include "nc_core/axis_config.hpp"
+#include "nc_core/kernel.hpp"
+
+namespace {
+
+constexpr std::size_t kMaxAxes = 4;
+constexpr std::size_t kBurst = 20;  // more than CommandMailbox::kQueueCapacity (16)
+constexpr int kMaxCycles = 3000;    // per input, keeps an execution short
+constexpr std::size_t kExecuteKinds = 13;
+
+// The blocks of one axis and the PLC program's own values for it.
+struct AxisProgram {
+  fb::MC_Power power;
+  fb::MC_Reset reset;
+  fb::MC_MoveAbsolute absolute;
+  fb::MC_MoveRelative relative;
+  fb::MC_MoveModulo modulo;
+  fb::MC_MoveVelocity velocity;
+  fb::MC_Halt halt;
+  fb::MC_Stop stop;
+  fb::MC_SetOverride set_override;
+  fb::MC_NewPos new_pos;
+  fb::MC_NewPosAndVelo new_pos_and_velo;
+  fb::MC_MoveSuperImposed superimposed;
+  fb::MC_AbortSuperposition abort_superposition;
+  fb::MC_ExtSetPointGenEnable ext_enable;
+  fb::MC_ExtSetPointGenDisable ext_disable;
+  fb::MC_ReadStatus status;
+  fb::MC_ReadActualPosition actual_position;
+  fb::MC_ReadAxisError axis_error;
+  std::array<fb::MC_MoveRelative, kBurst> burst;
+  double feed_p = 0.0, feed_v = 0.0, feed_a = 0.0;
+  int32_t feed_direction = 0;
+  bool feeding = false;
+};
+
+nc::AxisConfig axis_config(std::size_t index, uint8_t variant) {
+  nc::AxisConfig c;
+  c.name = "axis" + std::to_string(index);
+  if ((variant & 0x01U) != 0) {
+    c.sw_limit_min_enabled = c.sw_limit_max_enabled = true;
+    c.sw_limit_min = -1000.0;
+    c.sw_limit_max = 1000.0;
+  }
+  if ((variant & 0x02U) != 0) {
+    c.drive_model = nc::DriveModel::kFirstOrderLag;
+    c.drive_time_constant = 0.01;
+    c.drive_dead_time = 0.002;
+  }
+  if ((variant & 0x04U) != 0) {
+    // Fault injection: the drive saturates, a fast move lags into the following-error limit.
+    c.drive_max_velocity = 50.0;
+    c.following_error_limit = 1.0;
+    c.following_error_filter_time = 0.0;
+  }
+  if ((variant & 0x08U) != 0) c.kind = nc::AxisKind::kEncoder;
+  c.override_type = 1 + ((variant >> 4U) & 0x03U);
+  if ((variant & 0x40U) != 0) c.ext_setpoint_delay = 0.004;
+  if ((variant & 0x80U) != 0) {
+    c.modulo_factor = 100.0;
+    c.target_window_enabled = false;
+  }
+  return c;
+}
+
+fb::MC_BufferMode buffer_mode(fuzz::ByteReader& in) {
+  return in.below(8) == 0 ? static_cast<fb::MC_BufferMode>(static_cast<int8_t>(in.byte()))
+                          : fb::MC_Aborting;
+}
+fb::MC_Direction direction(fuzz::ByteReader& in) {
+  const uint8_t b = in.byte();
+  return static_cast<fb::MC_Direction>(b < 200 ? 1 + b % 4 : static_cast<int8_t>(b));
+}
+
+// One PLC cycle of one axis: every block once, in a fixed order.
+void plc_cycle(AxisProgram& a, plc::AXIS_REF& axis) {
+  a.power(axis);
+  fuzz::call_checked(a.reset, axis);
+  fuzz::call_checked(a.absolute, axis);
+  fuzz::call_checked(a.relative, axis);
+  fuzz::call_checked(a.modulo, axis);
+  fuzz::call_checked(a.velocity, axis);
+  fuzz::call_checked(a.halt, axis);
+  fuzz::call_checked(a.stop, axis);
+  a.set_override(axis);
+  fuzz::call_checked(a.new_pos, axis);
+  fuzz::call_checked(a.new_pos_and_velo, axis);
+  fuzz::call_checked(a.superimposed, axis);
+  fuzz::call_checked(a.abort_superposition, axis);
+  fuzz::call_checked(a.ext_enable, axis);
+  fuzz::call_checked(a.ext_disable, axis);
+  for (auto& b : a.burst)
+    fuzz::call_checked(b, axis);
+  if (a.feeding) {
+    (void)fb::MC_ExtSetPointGenFeed(a.feed_p, a.feed_v, a.feed_a, a.feed_direction, axis);
+  }
+  a.status(axis);
+  a.actual_position(axis);
+  a.axis_error(axis);
+}
+
+template <class Block>
+void set_motion(Block& b, fuzz::ByteReader& in) {
+  b.Velocity = in.number();
+  b.Acceleration = in.number();
+  b.Deceleration = in.number();
+  b.Jerk = in.number();
+  b.BufferMode = buffer_mode(in);
+}
+
+// Sets one Execute block's inputs and toggles its Execute; tells the watch what it may allow.
+void edit_execute_block(AxisProgram& a, fuzz::AxisWatch& watch, fuzz::ByteReader& in) {
+  const std::size_t kind = in.below(kExecuteKinds);
+  if (fuzz::g_trace) std::fprintf(stderr, " block %zu", kind);
+  switch (kind) {
+    case 0:
+      a.reset.Execute = !a.reset.Execute;
+      break;
+    case 1:
+      a.absolute.Position = in.number();
+      set_motion(a.absolute, in);
+      watch.allow_dynamics(a.absolute.Acceleration, a.absolute.Deceleration);
+      a.absolute.Execute = !a.absolute.Execute;
+      break;
+    case 2:
+      a.relative.Distance = in.number();
+      set_motion(a.relative, in);
+      watch.allow_dynamics(a.relative.Acceleration, a.relative.Deceleration);
+      a.relative.Execute = !a.relative.Execute;
+      break;
+    case 3:
+      a.modulo.Position = in.number();
+      set_motion(a.modulo, in);
+      a.modulo.Direction = direction(in);
+      watch.allow_dynamics(a.modulo.Acceleration, a.modulo.Deceleration);
+      a.modulo.Execute = !a.modulo.Execute;
+      break;
+    case 4:
+      set_motion(a.velocity, in);
+      a.velocity.Direction = direction(in);
+      watch.allow_dynamics(a.velocity.Acceleration, a.velocity.Deceleration);
+      a.velocity.Execute = !a.velocity.Execute;
+      break;
+    case 5:
+      a.halt.Deceleration = in.number();
+      a.halt.Jerk = in.number();
+      a.halt.BufferMode = buffer_mode(in);
+      watch.allow_dynamics(0.0, a.halt.Deceleration);
+      a.halt.Execute = !a.halt.Execute;
+      break;
+    case 6:
+      a.stop.Deceleration = in.number();
+      a.stop.Jerk = in.number();
+      watch.allow_dynamics(0.0, a.stop.Deceleration);
+      a.stop.Execute = !a.stop.Execute;
+      break;
+    case 7:
+      a.new_pos.NewPos = in.number();
+      a.new_pos.Execute = !a.new_pos.Execute;
+      break;
+    case 8:
+      a.new_pos_and_velo.NewPos = in.number();
+      a.new_pos_and_velo.NewVelo = in.number();
+      a.new_pos_and_velo.ActivationPos = in.number();
+      a.new_pos_and_velo.Execute = !a.new_pos_and_velo.Execute;
+      break;
+    case 9: {
+      fb::MC_MoveSuperImposed& c = a.superimposed;
+      c.Distance = in.number();
+      c.VelocityDiff = in.number();
+      c.Acceleration = in.number();
+      c.Deceleration = in.number();
+      c.VelocityProcess = in.number();
+      c.Length = in.number();
+      watch.allow_compensation(c.VelocityDiff, c.Acceleration, c.Deceleration, c.VelocityProcess);
+      c.Execute = !c.Execute;
+      break;
+    }
+    case 10:
+      a.abort_superposition.Execute = !a.abort_superposition.Execute;
+      break;
+    case 11: {
+      a.ext_enable.Position = in.number();
+      const uint8_t type = in.byte();
+      a.ext_enable.PositionType =
+          static_cast<fb::E_PositionType>(type < 250 ? 1 + type % 2 : static_cast<int8_t>(type));
+      a.ext_enable.Execute = !a.ext_enable.Execute;
+      break;
+    }
+    default:
+      a.ext_disable.Execute = !a.ext_disable.Execute;
+      break;
+  }
+}
+
+struct Program {
+  nc::Kernel kernel;
+  std::vector<plc::AXIS_REF*> axes;
+  std::vector<AxisProgram> programs;
+  std::vector<fuzz::AxisWatch> watches;
+  int cycles = 0;
+
+  // One tick: the PLC calls every block of every axis, then one NC cycle; then the checks.
+  void tick() {
+    {
+      const fuzz::AllocationRegion region;
+      for (std::size_t i = 0; i < axes.size(); ++i) {
+        AxisProgram& a = programs[i];
+        if (a.feeding && (a.feed_direction == 1 || a.feed_direction == -1) &&
+            (a.ext_enable.Execute ||
+             plc::test_bit(axes[i]->NcToPlc.StateDWord, plc::kStateExtSetPointGenEnabled))) {
+          watches[i].allow_external(a.feed_v, a.feed_a);
+        }
+        plc_cycle(a, *axes[i]);
+        watches[i].posted(*axes[i]);
+      }
+      kernel.cycle();
+      if (region.allocations() != 0) fuzz::fail("allocation in the PLC calls or the NC cycle");
+    }
+    for (std::size_t i = 0; i < axes.size(); ++i) {
+      if (fuzz::g_trace) {
+        const plc::NCTOPLC_AXIS_REF& n = axes[i]->NcToPlc;
+        std::fprintf(stderr, "  [%d] axis %zu p %.9g v %.9g a %.9g err 0x%X cmd %u/%u\n", cycles, i,
+                     n.SetPos, n.SetVelo, n.SetAcc, n.ErrorCode, n.CmdNo, n.CmdState);
+      }
+      if (const char* broken = watches[i].check(*axes[i])) {
+        const plc::NCTOPLC_AXIS_REF& n = axes[i]->NcToPlc;
+        std::fprintf(stderr,
+                     "axis %zu cycle %d: SetPos %.17g SetVelo %.17g SetAcc %.17g (limits v %.17g "
+                     "a %.17g) ErrorCode 0x%X StateDWord 0x%X non-finite %s\n",
+                     i, cycles, n.SetPos, n.SetVelo, n.SetAcc, watches[i].velocity_limit(),
+                     watches[i].acceleration_limit(), n.ErrorCode, n.StateDWord,
+                     fuzz::non_finite_field(n) != nullptr ? fuzz::non_finite_field(n) : "none");
+        fuzz::fail(broken);
+      }
+    }
+    ++cycles;
+  }
+};
+
+nc::KernelConfig kernel_config(uint8_t b) {
+  static constexpr std::array<double, 4> kCycles{0.001, 0.002, 0.0005, 0.004};
+  return nc::KernelConfig{kCycles[b % kCycles.size()]};
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
+  fuzz::g_trace = std::getenv("FUZZ_TRACE") != nullptr;
+  fuzz::ByteReader in(data, size);
+  Program p{nc::Kernel(kernel_config(in.byte())), {}, {}, {}, 0};
+  const std::size_t n_axes = 1 + in.below(kMaxAxes);
+  p.programs.resize(n_axes);
+  for (std::size_t i = 0; i < n_axes; ++i) {
+    const nc::AxisConfig config = axis_config(i, in.byte());
+    p.axes.push_back(&p.kernel.add_axis(config));
+    p.watches.emplace_back(config);
+    AxisProgram& a = p.programs[i];
+    a.power.Enable = a.power.Enable_Positive = a.power.Enable_Negative = true;
+    a.status.Enable = a.actual_position.Enable = a.axis_error.Enable = true;
+  }
+
+  while (!in.empty() && p.cycles < kMaxCycles) {
+    AxisProgram& a = p.programs[in.below(n_axes)];
+    const std::size_t axis_index = static_cast<std::size_t>(&a - p.programs.data());
+    plc::AXIS_REF& axis = *p.axes[axis_index];
+    fuzz::AxisWatch& watch = p.watches[axis_index];
+    const std::size_t op = in.below(12);
+    if (fuzz::g_trace) std::fprintf(stderr, "\nop %zu axis %zu:", op, axis_index);
+    switch (op) {
+      case 0:
+      case 1:
+      case 2:
+      case 3:
+        edit_execute_block(a, watch, in);
+        break;
+      case 4:
+        a.power.Enable = in.flag();
+        a.power.Enable_Positive = in.flag();
+        a.power.Enable_Negative = in.flag();
+        if (in.flag()) a.power.Override = in.number();
+        break;
+      case 5:
+        a.set_override.Enable = in.flag();
+        a.set_override.VelFactor = in.number();
+        break;
+      case 6:
+        a.feeding = in.flag() || a.feeding;
+        a.feed_p = in.number();
+        a.feed_v = in.number();
+        a.feed_a = in.number();
+        {
+          const uint8_t d = in.byte();
+          a.feed_direction = d < 240 ? static_cast<int32_t>(d % 3) - 1 : static_cast<int8_t>(d);
+        }
+        break;
+      case 7:
+        // Raw writes a PLC program may make: any override word, any cyclic coupling factor.
+        if (in.flag()) axis.PlcToNc.Override = static_cast<uint32_t>(in.u16()) * 32U;
+        axis.PlcToNc.GearRatio1 = in.number();
+        break;
+      case 8: {
+        // A burst: more rising edges in one cycle than the mailbox holds.
+        const std::size_t k = 1 + in.below(kBurst);
+        const double distance = in.number();
+        const double velocity = in.number();
+        for (std::size_t i = 0; i < kBurst; ++i) {
+          a.burst[i].Distance = distance;
+          a.burst[i].Velocity = velocity;
+          a.burst[i].Execute = i < k;
+        }
+        break;
+      }
+      case 9:
+        // Faults: a feed enable or the controller enable lost (or back).
+        switch (in.below(3)) {
+          case 0:
+            a.power.Enable_Positive = !a.power.Enable_Positive;
+            break;
+          case 1:
+            a.power.Enable_Negative = !a.power.Enable_Negative;
+            break;
+          default:
+            a.power.Enable = !a.power.Enable;
+            break;
+        }
+        break;
+      default: {
+        const std::size_t k = 1 + in.below(64);
+        for (std::size_t i = 0; i < k && p.cycles < kMaxCycles; ++i)
+          p.tick();
+        break;
+      }
+    }
+  }
+  for (int i = 0; i < 3; ++i)
+    p.tick();  // the last commands get their answers
+  return 0;
+}

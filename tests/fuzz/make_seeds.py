@@ -1,0 +1,180 @@
+#!/usr/bin/env python3
+"""Writes the seed corpora of the fuzz targets (tests/fuzz/corpus/*) from readable programs.
+
+The byte layout follows byte_reader.hpp and the targets' decoders; run it again after changing
+either. Usage: python3 tests/fuzz/make_seeds.py (from anywhere)."""
+import json
+import pathlib
+import struct
+
+HERE = pathlib.Path(__file__).resolve().parent
+SCALES = [1e-3, 1e-2, 1.0, 10.0, 100.0, 1000.0, 1e4, 1e5]
+
+
+def num(value):
+    """ByteReader::number() bytes for a plausible value (or a special: 'nan', 'inf', '-inf', 0)."""
+    if value == "nan":
+        return bytes([0x01])
+    if value == "inf":
+        return bytes([0x02])
+    if value == "-inf":
+        return bytes([0x82])
+    if value == "huge":
+        return bytes([0x05, 0])
+    if value == "denormal":
+        return bytes([0x03, 0])
+    if value == 0:
+        return bytes([0x00])
+    sign = 0x80 if value < 0 else 0
+    mag = abs(value)
+    for i, unit in enumerate(SCALES):
+        if mag <= unit * 10.0:
+            u = round(mag / (unit * 10.0) * 65535)
+            return bytes([sign | (i << 4) | 0x08]) + struct.pack(">H", u)
+    raise ValueError(value)
+
+
+def blocks_program(cycle=0, variants=(0,), ops=()):
+    out = bytes([cycle, len(variants) - 1]) + bytes(variants)
+    for op in ops:
+        out += op
+    return out
+
+
+def run(axis, k):
+    return bytes([axis, 10, k - 1])
+
+
+def absolute(axis, pos, v, a=0, d=0, j=0):
+    return bytes([axis, 0, 1]) + num(pos) + num(v) + num(a) + num(d) + num(j) + bytes([1])
+
+
+def relative(axis, dist, v):
+    return bytes([axis, 0, 2]) + num(dist) + num(v) + num(0) + num(0) + num(0) + bytes([1])
+
+
+def velocity(axis, v, direction=0):
+    return bytes([axis, 0, 4]) + num(v) + num(0) + num(0) + num(0) + bytes([1, direction])
+
+
+def execute(axis, kind):
+    return bytes([axis, 0, kind])
+
+
+def halt(axis, dec=0, jerk=0):
+    return bytes([axis, 0, 5]) + num(dec) + num(jerk) + bytes([1])
+
+
+def stop(axis, dec=0, jerk=0):
+    return bytes([axis, 0, 6]) + num(dec) + num(jerk)
+
+
+def new_pos(axis, pos):
+    return bytes([axis, 0, 7]) + num(pos)
+
+
+def new_pos_and_velo(axis, pos, velo, apos):
+    return bytes([axis, 0, 8]) + num(pos) + num(velo) + num(apos)
+
+
+def superimposed(axis, d, vk, ak, dk, vp, length):
+    return bytes([axis, 0, 9]) + num(d) + num(vk) + num(ak) + num(dk) + num(vp) + num(length)
+
+
+def ext_enable(axis, pos, relative_type=False):
+    return bytes([axis, 0, 11]) + num(pos) + bytes([1 if relative_type else 0])
+
+
+def feed(axis, p, v, a, direction):
+    return bytes([axis, 6, 1]) + num(p) + num(v) + num(a) + bytes([direction + 1])
+
+
+def override(axis, factor):
+    return bytes([axis, 5, 1]) + num(factor)
+
+
+def burst(axis, k, dist, v):
+    return bytes([axis, 8, k - 1]) + num(dist) + num(v)
+
+
+def fault(axis, which):
+    return bytes([axis, 9, which])
+
+
+BLOCKS = {
+    "move_absolute": blocks_program(ops=[run(0, 3), absolute(0, 500, 1000), run(0, 64), run(0, 64)]),
+    "move_and_new_pos": blocks_program(ops=[run(0, 3), absolute(0, 3000, 2000), run(0, 64),
+                                           new_pos(0, 1000), run(0, 64), run(0, 64)]),
+    "new_pos_and_velo": blocks_program(ops=[run(0, 3), absolute(0, 3000, 2000), run(0, 40),
+                                           new_pos_and_velo(0, 4000, 1000, 2000), run(0, 64),
+                                           run(0, 64)]),
+    "velocity_override_halt": blocks_program(ops=[run(0, 3), velocity(0, 1500), run(0, 40),
+                                                 override(0, 0.5), run(0, 40), halt(0, 20000, 200000),
+                                                 run(0, 64)]),
+    "stop_and_reset": blocks_program(ops=[run(0, 3), absolute(0, 2000, 2000), run(0, 30), stop(0),
+                                         run(0, 64), stop(0), run(0, 2), execute(0, 0), run(0, 3)]),
+    "compensation": blocks_program(ops=[run(0, 3), absolute(0, 10000, 2000), run(0, 50),
+                                       superimposed(0, 250, 300, 500, 1000, 2000, 5000), run(0, 64),
+                                       run(0, 64)]),
+    "external_setpoints": blocks_program(ops=[run(0, 3), ext_enable(0, 100), run(0, 2),
+                                             feed(0, 1, 100, 0, 1), run(0, 10), feed(0, 2, 100, 0, 1),
+                                             run(0, 10), feed(0, 2, 0, 0, 0), run(0, 5)]),
+    "mailbox_burst": blocks_program(ops=[run(0, 3), burst(0, 20, 10, 100), run(0, 5)]),
+    "following_error_fault": blocks_program(variants=(0x04,), ops=[run(0, 3), absolute(0, 500, 2000),
+                                                                  run(0, 64), execute(0, 0), run(0, 5)]),
+    "feed_enable_lost": blocks_program(ops=[run(0, 3), velocity(0, 1000), run(0, 30), fault(0, 0),
+                                           run(0, 64)]),
+    "four_axes": blocks_program(variants=(0x00, 0x03, 0x18, 0xE2),
+                                ops=[run(0, 3), absolute(0, 500, 1000), absolute(1, -300, 800),
+                                     velocity(2, 200, 2), relative(3, 50, 100), run(0, 64),
+                                     run(1, 64)]),
+    "bad_inputs": blocks_program(ops=[run(0, 3), absolute(0, "nan", 1000), run(0, 3),
+                                     absolute(0, 100, "inf"), run(0, 3), absolute(0, 100, -5),
+                                     run(0, 3), absolute(0, "huge", 1000), run(0, 3),
+                                     absolute(0, 100, "denormal"), run(0, 3)]),
+}
+
+PLANNER = {
+    # mode byte: bit 0 velocity planner, bit 1 raw doubles.
+    "rest_to_rest": bytes([0]) + num(0) + num(0) + num(0) + num(1000) + num(2000) + num(5000)
+    + num(5000) + num(50000),
+    "moving_start": bytes([0]) + num(100) + num(1500) + num(-2000) + num(-500) + num(2000)
+    + num(5000) + num(10000) + num(50000),
+    "over_speed": bytes([0]) + num(0) + num(3000) + num(0) + num(5000) + num(2000) + num(5000)
+    + num(5000) + num(50000),
+    "velocity": bytes([1]) + num(0) + num(-500) + num(100) + num(1500) + num(2000) + num(5000)
+    + num(5000) + num(50000),
+    "raw": bytes([2]) + b"".join(struct.pack(">d", x) for x in
+                                 (0.0, 0.0, 0.0, 100.0, 10.0, 100.0, 100.0, 1000.0)),
+}
+
+
+def config_documents():
+    docs = {
+        "empty_axes": {"axes": []},
+        "one_axis": {"axes": [{"name": "x"}]},
+        "kernel_and_axes": {"kernel": {"cycle_time": 0.002},
+                            "axes": [{"name": "x", "max_velocity": 1000, "ref_velocity": 900},
+                                     {"name": "y", "id": 7, "kind": "encoder"}]},
+        "drive_lag": {"axes": [{"name": "z", "drive_model": "first_order_lag",
+                                "drive_time_constant": 0.01, "drive_dead_time": 0.002,
+                                "sw_limit_min_enabled": True, "sw_limit_min": -10,
+                                "sw_limit_max_enabled": True, "sw_limit_max": 10}]},
+        "bad_value": {"axes": [{"name": "x", "jerk": -1}]},
+        "unknown_key": {"axes": [{"name": "x", "colour": "red"}]},
+    }
+    for example in sorted((HERE.parent.parent / "docs" / "examples").glob("*.json")):
+        docs["example_" + example.stem] = json.loads(example.read_text())
+    return {k: json.dumps(v, indent=1).encode() for k, v in docs.items()}
+
+
+def write(kind, seeds):
+    folder = HERE / "corpus" / kind
+    folder.mkdir(parents=True, exist_ok=True)
+    for name, data in seeds.items():
+        (folder / name).write_bytes(data)
+
+
+write("blocks", BLOCKS)
+write("planner", PLANNER)
+write("config", config_documents())
