@@ -227,7 +227,7 @@ TEST_CASE("an enum value outside the named ones is refused", "[config]") {
   auto e = error_of([&] { nc::validate(c); });
   REQUIRE(e);
   CHECK(e->pointer() == "/kind");
-  CHECK(e->rule() == R"(must be one of "continuous", "encoder")");
+  CHECK(e->rule() == R"(must be one of "continuous", "encoder", "two_speed")");
 
   c = named_axis();
   c.drive_model = static_cast<nc::DriveModel>(-1);
