@@ -62,11 +62,12 @@ TEST_CASE("looping 30 mm: 0 to 1000 and 2000 to 1000 both end approaching from a
 
   // 0 → 1000 overshoots towards 1030: rapid off 100 mm before the reversal point (at 930), creep
   // off 5 mm before it, then the return leg creeps back (30 mm < creep distance 120).
-  const int rapid_off =
+  const std::size_t rapid_off =
       ts::first(up.trace, [](const Sample& s) { return s.state == ts::State::kHighToLowDelay; });
+  REQUIRE(rapid_off != ts::kNotFound);
   REQUIRE(rapid_off > 0);
-  CHECK(up.trace[static_cast<std::size_t>(rapid_off)].actual >= 930.0);
-  CHECK(up.trace[static_cast<std::size_t>(rapid_off - 1)].actual < 930.0);
+  CHECK(up.trace[rapid_off].actual >= 930.0);
+  CHECK(up.trace[rapid_off - 1].actual < 930.0);
   CHECK(up.highest > 1030.0 - 5.0);
   CHECK(up.highest <= 1030.0);
   CHECK(ts::state_sequence(up.trace) == std::vector<uint32_t>{21, 22, 23, 24, 23, 24, 20});
@@ -129,7 +130,7 @@ TEST_CASE("a stop during the first leg of a loop ends there, without the return 
   CHECK(end.event == ts::TwoSpeedEvent::kStopped);
   CHECK(ts::first(loop.trace, [](const Sample& s) {
           return s.bit(C::bMinusLow) || s.bit(C::bMinusHigh);
-        }) == -1);
+        }) == ts::kNotFound);
   loop.settle();
   CHECK(loop.actual() < 1000.0);
 }

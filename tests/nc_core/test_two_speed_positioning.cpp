@@ -22,7 +22,7 @@ struct Direction {
   double target;
   double creep_point;    // rapid off when the actual position passes it
   double braking_point;  // creep off when the actual position passes it
-  int brake_incidence_cycles;
+  std::size_t brake_incidence_cycles;
   C rapid;
   C creep;
   C other_rapid;
@@ -56,39 +56,44 @@ void check_positioning(const Direction& d) {
   CHECK(ts::images_consistent(trace));
 
   // T0: brake released in the start's cycle, nothing travelling yet.
-  const int t0 = 0;
+  const std::size_t t0 = 0;
   CHECK_FALSE(trace[t0].brake());
   CHECK_FALSE(trace[t0].travel());
   CHECK(trace[t0].state == State::kMainTravel);
 
   // T1 = T0 + brake release delay 0.05 s: rapid on.
-  const int rapid_on = ts::first(trace, [&](const Sample& s) { return s.bit(d.rapid); });
+  const std::size_t rapid_on = ts::first(trace, [&](const Sample& s) { return s.bit(d.rapid); });
+  REQUIRE(rapid_on != ts::kNotFound);
   CHECK(rapid_on == t0 + 50);
 
   // T2: rapid off in the first cycle whose actual position has passed the creep point.
-  const int rapid_off = ts::first(
+  const std::size_t rapid_off = ts::first(
       trace, [&](const Sample& s) { return !s.bit(d.rapid); }, rapid_on);
+  REQUIRE(rapid_off != ts::kNotFound);
   REQUIRE(rapid_off > rapid_on);
   CHECK(passed(trace[rapid_off].actual, d.creep_point, d.target));
   CHECK_FALSE(passed(trace[rapid_off - 1].actual, d.creep_point, d.target));
   CHECK(trace[rapid_off].state == State::kHighToLowDelay);
 
   // T3 = T2 + 0.02 s: creep on.
-  const int creep_on = ts::first(trace, [&](const Sample& s) { return s.bit(d.creep); });
+  const std::size_t creep_on = ts::first(trace, [&](const Sample& s) { return s.bit(d.creep); });
+  REQUIRE(creep_on != ts::kNotFound);
   CHECK(creep_on == rapid_off + 20);
   CHECK(trace[creep_on - 1].state == State::kHighToLowDelay);
   CHECK(trace[creep_on].state == State::kLowSpeedTravel);
 
   // T4: creep off in the first cycle past the braking point.
-  const int creep_off = ts::first(
+  const std::size_t creep_off = ts::first(
       trace, [&](const Sample& s) { return !s.bit(d.creep); }, creep_on);
+  REQUIRE(creep_off != ts::kNotFound);
   REQUIRE(creep_off > creep_on);
   CHECK(passed(trace[creep_off].actual, d.braking_point, d.target));
   CHECK_FALSE(passed(trace[creep_off - 1].actual, d.braking_point, d.target));
   CHECK(trace[creep_off].state == State::kBrakeIncidenceDelay);
 
   // T5 = T4 + brake incidence delay: brake on, positioning done, nAxisState 20.
-  const int brake_on = ts::first(trace, [](const Sample& s) { return s.brake(); });
+  const std::size_t brake_on = ts::first(trace, [](const Sample& s) { return s.brake(); });
+  REQUIRE(brake_on != ts::kNotFound);
   CHECK(brake_on == creep_off + d.brake_incidence_cycles);
   CHECK(trace[brake_on].state == State::kStopped);
   CHECK(trace[brake_on].event == ts::TwoSpeedEvent::kDone);
@@ -147,7 +152,7 @@ TEST_CASE("a start inside the creep distance creeps at once, without rapid and i
   REQUIRE(loop.run_to_event().event == ts::TwoSpeedEvent::kDone);
   const auto& trace = loop.trace;
   CHECK(ts::images_consistent(trace));
-  CHECK(ts::first(trace, [](const Sample& s) { return s.bit(C::bPlusHigh); }) == -1);
+  CHECK(ts::first(trace, [](const Sample& s) { return s.bit(C::bPlusHigh); }) == ts::kNotFound);
   CHECK(ts::first(trace, [](const Sample& s) { return s.bit(C::bPlusLow); }) == 50);
   CHECK(ts::state_sequence(trace) == std::vector<uint32_t>{21, 23, 24, 20});
   loop.settle();

@@ -19,17 +19,17 @@ namespace {
 
 // Starts to `target` at `velocity` and calls stop in the first cycle whose actual position has
 // passed `stop_at` (in the direction of travel); returns that cycle's index.
-int run_with_stop(ts::Loop& loop, double target, double velocity, double stop_at) {
+std::size_t run_with_stop(ts::Loop& loop, double target, double velocity, double stop_at) {
   REQUIRE(loop.start(target, velocity) == plc::ErrorCode::kNone);
   const double direction = target > loop.actual() ? 1.0 : -1.0;
-  int stop_cycle = -1;
+  std::size_t stop_cycle = ts::kNotFound;
   const Sample& end = loop.run_to_event(20000, [&](ts::Loop& l) {
-    if (stop_cycle < 0 && (l.actual() - stop_at) * direction >= 0.0) {
-      stop_cycle = static_cast<int>(l.trace.size());
+    if (stop_cycle == ts::kNotFound && (l.actual() - stop_at) * direction >= 0.0) {
+      stop_cycle = l.trace.size();
       REQUIRE(l.stop() == plc::ErrorCode::kNone);
     }
   });
-  REQUIRE(stop_cycle >= 0);
+  REQUIRE(stop_cycle != ts::kNotFound);
   CHECK(end.event == ts::TwoSpeedEvent::kStopped);
   CHECK(ts::images_consistent(loop.trace));
   return stop_cycle;
@@ -40,64 +40,71 @@ int run_with_stop(ts::Loop& loop, double target, double velocity, double stop_at
 TEST_CASE("stop at 500 during rapid: creep 20 mm from there, then brake, no rapid after it",
           "[two_speed][stop]") {
   ts::Loop loop(ts::issue_axis());
-  const int k = run_with_stop(loop, 1000.0, 2000.0, 500.0);
+  const std::size_t k = run_with_stop(loop, 1000.0, 2000.0, 500.0);
   const auto& trace = loop.trace;
-  const double stop_position = trace[static_cast<std::size_t>(k)].actual;
+  const double stop_position = trace[k].actual;
   REQUIRE(stop_position >= 500.0);
-  CHECK(trace[static_cast<std::size_t>(k) - 1].bit(C::bPlusHigh));
-  for (std::size_t i = static_cast<std::size_t>(k); i < trace.size(); ++i) {
+  CHECK(trace[k - 1].bit(C::bPlusHigh));
+  for (std::size_t i = k; i < trace.size(); ++i) {
     CHECK_FALSE(trace[i].bit(C::bPlusHigh));
   }
-  CHECK(trace[static_cast<std::size_t>(k)].state == State::kHighToLowDelay);
-  const int creep_on = ts::first(trace, [](const Sample& s) { return s.bit(C::bPlusLow); });
+  CHECK(trace[k].state == State::kHighToLowDelay);
+  const std::size_t creep_on = ts::first(trace, [](const Sample& s) { return s.bit(C::bPlusLow); });
+  REQUIRE(creep_on != ts::kNotFound);
   CHECK(creep_on == k + 20);
-  const int creep_off = ts::first(
+  const std::size_t creep_off = ts::first(
       trace, [](const Sample& s) { return !s.bit(C::bPlusLow); }, creep_on);
-  CHECK(trace[static_cast<std::size_t>(creep_off)].actual >= stop_position + 20.0);
-  CHECK(trace[static_cast<std::size_t>(creep_off - 1)].actual < stop_position + 20.0);
-  CHECK(trace[static_cast<std::size_t>(creep_off)].state == State::kBrakeIncidenceDelay);
-  const int brake_on = ts::first(trace, [](const Sample& s) { return s.brake(); });
+  REQUIRE(creep_off != ts::kNotFound);
+  CHECK(trace[creep_off].actual >= stop_position + 20.0);
+  CHECK(trace[creep_off - 1].actual < stop_position + 20.0);
+  CHECK(trace[creep_off].state == State::kBrakeIncidenceDelay);
+  const std::size_t brake_on = ts::first(trace, [](const Sample& s) { return s.brake(); });
+  REQUIRE(brake_on != ts::kNotFound);
   CHECK(brake_on == creep_off + 30);
-  CHECK(trace[static_cast<std::size_t>(brake_on)].state == State::kStopped);
+  CHECK(trace[brake_on].state == State::kStopped);
   CHECK(ts::state_sequence(trace) == std::vector<uint32_t>{21, 22, 23, 24, 20});
   loop.settle();
   // The plant was still running down from rapid when the creep went off (220 mm/s): it runs
   // down at 500 mm/s / 0.1 s for the 0.03 s of brake incidence delay (to 70 mm/s), then the brake
   // stops it within 0.05 mm: the end lies short of the free run-down v² / 2a (4.84 mm).
-  const auto off = static_cast<std::size_t>(creep_off);
-  const double v_off = trace[off - 1].velocity;
+  const double v_off = trace[creep_off - 1].velocity;
   CHECK(v_off == Approx(220.0));
-  CHECK(loop.actual() > trace[off].actual + 4.3);
-  CHECK(loop.actual() < trace[off].actual + v_off * v_off / (2.0 * 5000.0));
+  CHECK(loop.actual() > trace[creep_off].actual + 4.3);
+  CHECK(loop.actual() < trace[creep_off].actual + v_off * v_off / (2.0 * 5000.0));
 }
 
 TEST_CASE("stop during creep main travel keeps creeping for the stop distance",
           "[two_speed][stop]") {
   ts::Loop loop(ts::issue_axis());
-  const int k = run_with_stop(loop, 1000.0, 40.0, 500.0);
+  const std::size_t k = run_with_stop(loop, 1000.0, 40.0, 500.0);
   const auto& trace = loop.trace;
-  const double stop_position = trace[static_cast<std::size_t>(k)].actual;
-  CHECK(trace[static_cast<std::size_t>(k)].state == State::kLowSpeedTravel);
-  CHECK(trace[static_cast<std::size_t>(k)].bit(C::bPlusLow));
+  const double stop_position = trace[k].actual;
+  CHECK(trace[k].state == State::kLowSpeedTravel);
+  CHECK(trace[k].bit(C::bPlusLow));
   CHECK(ts::state_sequence(trace) == std::vector<uint32_t>{21, 23, 24, 20});
-  const int creep_off = ts::first(
+  const std::size_t creep_off = ts::first(
       trace, [](const Sample& s) { return !s.bit(C::bPlusLow); }, k);
-  CHECK(trace[static_cast<std::size_t>(creep_off)].actual >= stop_position + 20.0);
-  CHECK(trace[static_cast<std::size_t>(creep_off - 1)].actual < stop_position + 20.0);
+  REQUIRE(creep_off != ts::kNotFound);
+  CHECK(trace[creep_off].actual >= stop_position + 20.0);
+  CHECK(trace[creep_off - 1].actual < stop_position + 20.0);
 }
 
 TEST_CASE("stop in the negative direction uses the negative brake incidence delay",
           "[two_speed][stop]") {
   ts::Loop loop(ts::issue_axis());
-  const int k = run_with_stop(loop, -1000.0, 2000.0, -500.0);
+  const std::size_t k = run_with_stop(loop, -1000.0, 2000.0, -500.0);
   const auto& trace = loop.trace;
-  const double stop_position = trace[static_cast<std::size_t>(k)].actual;
-  const int creep_on = ts::first(trace, [](const Sample& s) { return s.bit(C::bMinusLow); });
+  const double stop_position = trace[k].actual;
+  const std::size_t creep_on =
+      ts::first(trace, [](const Sample& s) { return s.bit(C::bMinusLow); });
+  REQUIRE(creep_on != ts::kNotFound);
   CHECK(creep_on == k + 20);
-  const int creep_off = ts::first(
+  const std::size_t creep_off = ts::first(
       trace, [](const Sample& s) { return !s.bit(C::bMinusLow); }, creep_on);
-  CHECK(trace[static_cast<std::size_t>(creep_off)].actual <= stop_position - 20.0);
-  const int brake_on = ts::first(trace, [](const Sample& s) { return s.brake(); });
+  REQUIRE(creep_off != ts::kNotFound);
+  CHECK(trace[creep_off].actual <= stop_position - 20.0);
+  const std::size_t brake_on = ts::first(trace, [](const Sample& s) { return s.brake(); });
+  REQUIRE(brake_on != ts::kNotFound);
   CHECK(brake_on == creep_off + 40);
 }
 
@@ -106,10 +113,11 @@ TEST_CASE("a stop near the target creeps off at the braking point when that come
   ts::Loop loop(ts::issue_axis());
   run_with_stop(loop, 1000.0, 2000.0, 990.0);  // in the creep phase; 990 + 20 is beyond 995
   const auto& trace = loop.trace;
-  const int creep_off =
+  const std::size_t creep_off =
       ts::first(trace, [](const Sample& s) { return s.state == State::kBrakeIncidenceDelay; });
-  CHECK(trace[static_cast<std::size_t>(creep_off)].actual >= 995.0);
-  CHECK(trace[static_cast<std::size_t>(creep_off - 1)].actual < 995.0);
+  REQUIRE(creep_off != ts::kNotFound);
+  CHECK(trace[creep_off].actual >= 995.0);
+  CHECK(trace[creep_off - 1].actual < 995.0);
   CHECK(ts::state_sequence(trace) == std::vector<uint32_t>{21, 22, 23, 24, 20});
 }
 
@@ -118,8 +126,8 @@ TEST_CASE("a stop in the brake incidence delay lets it run out", "[two_speed][st
   REQUIRE(plain.start(1000.0, 2000.0) == plc::ErrorCode::kNone);
   plain.run_to_event();
   ts::Loop stopped(ts::issue_axis());
-  const int k = run_with_stop(stopped, 1000.0, 2000.0, 995.0);
-  CHECK(stopped.trace[static_cast<std::size_t>(k)].state == State::kBrakeIncidenceDelay);
+  const std::size_t k = run_with_stop(stopped, 1000.0, 2000.0, 995.0);
+  CHECK(stopped.trace[k].state == State::kBrakeIncidenceDelay);
   // Same cycles, same image; only the event says stopped instead of done.
   REQUIRE(plain.trace.size() == stopped.trace.size());
   CHECK(plain.trace.back().event == ts::TwoSpeedEvent::kDone);
@@ -178,7 +186,7 @@ TEST_CASE("a creep distance for stop of 0 switches the creep off at once", "[two
   nc::AxisConfig c = ts::issue_axis();
   c.creep_distance_stop = 0.0;
   ts::Loop loop(c);
-  const int k = run_with_stop(loop, 1000.0, 40.0, 300.0);
-  CHECK(loop.trace[static_cast<std::size_t>(k)].state == State::kBrakeIncidenceDelay);
-  CHECK_FALSE(loop.trace[static_cast<std::size_t>(k)].travel());
+  const std::size_t k = run_with_stop(loop, 1000.0, 40.0, 300.0);
+  CHECK(loop.trace[k].state == State::kBrakeIncidenceDelay);
+  CHECK_FALSE(loop.trace[k].travel());
 }

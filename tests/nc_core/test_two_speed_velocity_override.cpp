@@ -17,7 +17,7 @@ using C = plc::ControlByteBit;
 namespace {
 
 bool ever(const std::vector<Sample>& trace, C bit) {
-  return ts::first(trace, [bit](const Sample& s) { return s.bit(bit); }) >= 0;
+  return ts::first(trace, [bit](const Sample& s) { return s.bit(bit); }) != ts::kNotFound;
 }
 
 // A positioning 0 → 1000 with `override_value` (0 … 1'000'000) set before the start.
@@ -40,9 +40,10 @@ TEST_CASE("start velocity above 50 is rapid, 50 and below creep only", "[two_spe
     CHECK(ts::first(trace, [](const Sample& s) { return s.bit(C::bPlusLow); }) == 50);
     // No rapid, so no rapid-to-creep delay: main travel in creep, then the creep phase at 900.
     CHECK(ts::state_sequence(trace) == std::vector<uint32_t>{21, 23, 24, 20});
-    const int creep_phase =
+    const std::size_t creep_phase =
         ts::first(trace, [](const Sample& s) { return s.state == State::kLowSpeedTravel; });
-    CHECK(trace[static_cast<std::size_t>(creep_phase)].actual >= 900.0);
+    REQUIRE(creep_phase != ts::kNotFound);
+    CHECK(trace[creep_phase].actual >= 900.0);
   }
   for (const double v : {50.001, 2000.0}) {
     INFO("v " << v);

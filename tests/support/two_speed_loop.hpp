@@ -6,6 +6,7 @@
 // test_two_speed_* files).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -122,13 +123,14 @@ class Loop {
   Sample last_;
 };
 
-// Index of the first sample at or after `from` for which `pred` holds; -1 when none.
+// Index of the first sample at or after `from` for which `pred` holds; kNotFound when none.
+inline constexpr std::size_t kNotFound = static_cast<std::size_t>(-1);
 template <class Pred>
-int first(const std::vector<Sample>& trace, Pred pred, int from = 0) {
-  for (int i = from; i < static_cast<int>(trace.size()); ++i) {
-    if (pred(trace[static_cast<std::size_t>(i)])) return i;
+std::size_t first(const std::vector<Sample>& trace, Pred pred, std::size_t from = 0) {
+  for (std::size_t i = from; i < trace.size(); ++i) {
+    if (pred(trace[i])) return i;
   }
-  return -1;
+  return kNotFound;
 }
 
 // The nAxisState values in order, each run of equal values once (21, 22, 23, 24, 20).
