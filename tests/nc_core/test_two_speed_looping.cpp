@@ -35,7 +35,7 @@ Run position(double looping, double from, double to) {
   ts::Loop loop(looping_axis(looping), from);
   REQUIRE(loop.start(to, 2000.0) == plc::ErrorCode::kNone);
   REQUIRE(loop.run_to_event().event == ts::TwoSpeedEvent::kDone);
-  loop.settle();
+  loop.run_cycles();
   Run r{loop.trace, loop.actual(), from, from};
   for (const Sample& s : loop.trace) {
     r.highest = std::max(r.highest, s.actual);
@@ -131,6 +131,6 @@ TEST_CASE("a stop during the first leg of a loop ends there, without the return 
   CHECK(ts::first(loop.trace, [](const Sample& s) {
           return s.bit(C::bMinusLow) || s.bit(C::bMinusHigh);
         }) == ts::kNotFound);
-  loop.settle();
+  loop.run_cycles();
   CHECK(loop.actual() < 1000.0);
 }

@@ -45,7 +45,7 @@ std::vector<Sample> run(const Direction& d, double& final_position) {
   REQUIRE(loop.start(d.target, 2000.0) == plc::ErrorCode::kNone);
   const Sample& end = loop.run_to_event();
   REQUIRE(end.event == ts::TwoSpeedEvent::kDone);
-  loop.settle();
+  loop.run_cycles();
   final_position = loop.actual();
   return loop.trace;
 }
@@ -155,6 +155,6 @@ TEST_CASE("a start inside the creep distance creeps at once, without rapid and i
   CHECK(ts::first(trace, [](const Sample& s) { return s.bit(C::bPlusHigh); }) == ts::kNotFound);
   CHECK(ts::first(trace, [](const Sample& s) { return s.bit(C::bPlusLow); }) == 50);
   CHECK(ts::state_sequence(trace) == std::vector<uint32_t>{21, 23, 24, 20});
-  loop.settle();
+  loop.run_cycles();
   CHECK(std::abs(loop.actual() - 55.0) < 0.35);
 }

@@ -96,8 +96,7 @@ TEST_CASE("a non-finite actual position refuses a start and ends a running posit
   ts::Loop loop(ts::issue_axis());
   CHECK(loop.sequencer.start(1000.0, 2000.0, kNaN) == E::kActualValueNotFinite);
   REQUIRE(loop.start(1000.0, 2000.0) == E::kNone);
-  for (int i = 0; i < 300; ++i)
-    loop.cycle();
+  loop.run_cycles(300);
   REQUIRE(loop.trace.back().bit(plc::ControlByteBit::bPlusHigh));
   const nc::detail::TwoSpeedCycle out = loop.sequencer.step(kNaN, 0.001);
   CHECK(out.event == ts::TwoSpeedEvent::kError);
@@ -112,8 +111,7 @@ TEST_CASE("disabling during a positioning brakes at once and shows nAxisState 0"
           "[two_speed][refusal]") {
   ts::Loop loop(ts::issue_axis());
   REQUIRE(loop.start(1000.0, 2000.0) == E::kNone);
-  for (int i = 0; i < 300; ++i)
-    loop.cycle();
+  loop.run_cycles(300);
   loop.sequencer.set_enabled(false);
   const Sample& s = loop.cycle();
   CHECK(s.state == State::kInactive);

@@ -63,7 +63,7 @@ TEST_CASE("stop at 500 during rapid: creep 20 mm from there, then brake, no rapi
   CHECK(brake_on == creep_off + 30);
   CHECK(trace[brake_on].state == State::kStopped);
   CHECK(ts::state_sequence(trace) == std::vector<uint32_t>{21, 22, 23, 24, 20});
-  loop.settle();
+  loop.run_cycles();
   // The plant was still running down from rapid when the creep went off (220 mm/s): it runs
   // down at 500 mm/s / 0.1 s for the 0.03 s of brake incidence delay (to 70 mm/s), then the brake
   // stops it within 0.05 mm: the end lies short of the free run-down v² / 2a (4.84 mm).
@@ -146,7 +146,7 @@ TEST_CASE("a stop during the brake release delay brakes at once", "[two_speed][s
   CHECK(s.brake());
   CHECK_FALSE(s.travel());
   CHECK(s.state == State::kStopped);
-  loop.settle();
+  loop.run_cycles();
   CHECK(loop.actual() == 0.0);
 }
 
@@ -165,11 +165,9 @@ TEST_CASE("a stop while the override holds the axis stationary brakes without cr
           "[two_speed][stop]") {
   ts::Loop loop(ts::issue_axis());
   REQUIRE(loop.start(1000.0, 2000.0) == plc::ErrorCode::kNone);
-  for (int i = 0; i < 400; ++i)
-    loop.cycle();
+  loop.run_cycles(400);
   loop.set_override_percent(0.0);
-  for (int i = 0; i < 400; ++i)
-    loop.cycle();
+  loop.run_cycles(400);
   REQUIRE(loop.trace.back().state == State::kMainTravel);
   REQUIRE_FALSE(loop.trace.back().travel());
   const std::size_t k = loop.trace.size();

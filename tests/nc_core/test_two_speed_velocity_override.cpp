@@ -78,8 +78,7 @@ TEST_CASE("override 40 % during rapid switches to creep through the rapid-to-cre
           "[two_speed][override]") {
   ts::Loop loop(ts::issue_axis());
   REQUIRE(loop.start(1000.0, 2000.0) == plc::ErrorCode::kNone);
-  for (int i = 0; i < 500; ++i)
-    loop.cycle();
+  loop.run_cycles(500);
   REQUIRE(loop.trace.back().bit(C::bPlusHigh));
   const std::size_t k = loop.trace.size();
   loop.set_override_percent(40.0);
@@ -96,7 +95,7 @@ TEST_CASE("override 40 % during rapid switches to creep through the rapid-to-cre
   CHECK(trace[k + 20].state == State::kMainTravel);
   // The rapid was off long before the creep distance: no second delay there.
   CHECK(ts::state_sequence(trace) == std::vector<uint32_t>{21, 23, 24, 20});
-  loop.settle();
+  loop.run_cycles();
   CHECK(std::abs(loop.actual() - 1000.0) <= 5.0);
 }
 
@@ -104,8 +103,7 @@ TEST_CASE("override 0 holds the axis in main travel and a rising override resume
           "[two_speed][override]") {
   ts::Loop loop(ts::issue_axis());
   REQUIRE(loop.start(1000.0, 2000.0) == plc::ErrorCode::kNone);
-  for (int i = 0; i < 500; ++i)
-    loop.cycle();
+  loop.run_cycles(500);
   loop.set_override_percent(0.0);
   for (int i = 0; i < 1000; ++i) {
     const Sample& s = loop.cycle();
@@ -116,8 +114,7 @@ TEST_CASE("override 0 holds the axis in main travel and a rising override resume
   // At rest: 0.1 s of run-down from 500 mm/s, then still.
   const double held = loop.actual();
   CHECK(loop.plant.velocity() == 0.0);
-  for (int i = 0; i < 100; ++i)
-    loop.cycle();
+  loop.run_cycles(100);
   CHECK(loop.actual() == held);
   loop.set_override_percent(100.0);
   const std::size_t k = loop.trace.size();
@@ -125,7 +122,7 @@ TEST_CASE("override 0 holds the axis in main travel and a rising override resume
   REQUIRE(loop.run_to_event().event == ts::TwoSpeedEvent::kDone);
   CHECK(loop.trace[k].state == State::kMainTravel);
   CHECK(ts::images_consistent(loop.trace));
-  loop.settle();
+  loop.run_cycles();
   CHECK(std::abs(loop.actual() - 1000.0) <= 5.0);
 }
 

@@ -106,8 +106,9 @@ class Loop {
     }
     return last_;
   }
-  // Cycles on at rest (the plant coasts out), e.g. to read the final position.
-  void settle(int cycles = 200) {
+  // `cycles` NC cycles with nothing done in between (by default long enough for the plant to
+  // come to rest after a positioning).
+  void run_cycles(int cycles = 200) {
     for (int i = 0; i < cycles; ++i)
       cycle();
   }
