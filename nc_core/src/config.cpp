@@ -202,6 +202,12 @@ void validate(const AxisConfig& config) {
     throw ConfigError("/recalc_input_position_absolute",
                       "needs recalc_link_main_input_position (P-AXIS-00436)", "true");
   }
+  if (config.kind == AxisKind::kTwoSpeed) {
+    validate_two_speed(config);
+    // Until the kernel drives a two-speed axis (TwoSpeedAxis on the phased kernel), refusing it
+    // here keeps add_axis/from_json from running it as a servo axis. Remove with the integration.
+    throw ConfigError("/kind", "two-speed axes are not yet driven by the kernel", "\"two_speed\"");
+  }
 }
 
 std::string_view to_string(AxisKind kind) {

@@ -133,6 +133,8 @@ std::string_view error_text(ErrorCode code) noexcept {
       return "actual value is not a finite number";
     case E::kStateNotFinite:
       return "start state is not finite";
+    case E::kTwoSpeedDistanceTooShort:
+      return "two-speed axis: distance to the target not larger than the braking distance";
     case E::kHliFractOnReferencedAxis:
       return "FRACT coupling: the axis cannot stop before a software limit";
     case E::kHliChangeWhileMoving:

@@ -229,7 +229,7 @@ TEST_CASE("an enum is given by its name; another string or type is refused", "[c
   auto e = error_of(d);
   REQUIRE(e);
   CHECK(e->pointer() == "/axes/0/kind");
-  CHECK(e->rule() == R"(must be one of "continuous", "encoder")");
+  CHECK(e->rule() == R"(must be one of "continuous", "encoder", "two_speed")");
 
   d = two_axes();
   d["axes"][1]["drive_model"] = 1;

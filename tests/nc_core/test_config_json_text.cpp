@@ -7,19 +7,12 @@
 #include <string>
 #include <string_view>
 
+#include "config_error_of.hpp"
 #include "nc_core/config.hpp"
 
 namespace {
 
-template <class F>
-std::optional<nc::ConfigError> error_of(F&& f) {
-  try {
-    f();
-  } catch (const nc::ConfigError& e) {
-    return e;
-  }
-  return std::nullopt;
-}
+using cfgtest::error_of;
 
 std::optional<nc::ConfigError> text_error(std::string_view text) {
   return error_of([&] { (void)nc::parse_kernel_setup_text(text); });

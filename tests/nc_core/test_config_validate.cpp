@@ -3,24 +3,16 @@
 #include <catch2/catch.hpp>
 
 #include <limits>
-#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "config_error_of.hpp"
 #include "nc_core/config.hpp"
 
 namespace {
 
-template <class F>
-std::optional<nc::ConfigError> error_of(F&& f) {
-  try {
-    f();
-  } catch (const nc::ConfigError& e) {
-    return e;
-  }
-  return std::nullopt;
-}
+using cfgtest::error_of;
 
 nc::AxisConfig named_axis() {
   nc::AxisConfig c;
@@ -43,6 +35,8 @@ const std::vector<DoubleField> kPositiveFields = {
     {"target_window", &nc::AxisConfig::target_window},
     {"position_range_window", &nc::AxisConfig::position_range_window},
     {"standstill_window", &nc::AxisConfig::standstill_window},
+    {"rapid_velocity", &nc::AxisConfig::rapid_velocity},
+    {"creep_velocity", &nc::AxisConfig::creep_velocity},
 };
 
 const std::vector<DoubleField> kNonNegativeFields = {
@@ -51,6 +45,17 @@ const std::vector<DoubleField> kNonNegativeFields = {
     {"encoder_increment", &nc::AxisConfig::encoder_increment},
     {"following_error_filter_time", &nc::AxisConfig::following_error_filter_time},
     {"target_window_time", &nc::AxisConfig::target_window_time},
+    // Two-speed distances and delays: checked on every axis kind.
+    {"creep_distance_positive", &nc::AxisConfig::creep_distance_positive},
+    {"creep_distance_negative", &nc::AxisConfig::creep_distance_negative},
+    {"braking_distance_positive", &nc::AxisConfig::braking_distance_positive},
+    {"braking_distance_negative", &nc::AxisConfig::braking_distance_negative},
+    {"brake_incidence_delay_positive", &nc::AxisConfig::brake_incidence_delay_positive},
+    {"brake_incidence_delay_negative", &nc::AxisConfig::brake_incidence_delay_negative},
+    {"rapid_to_creep_delay", &nc::AxisConfig::rapid_to_creep_delay},
+    {"creep_distance_stop", &nc::AxisConfig::creep_distance_stop},
+    {"brake_release_delay", &nc::AxisConfig::brake_release_delay},
+    {"two_speed_ramp_time", &nc::AxisConfig::two_speed_ramp_time},
 };
 
 const std::vector<DoubleField> kAllDoubleFields = [] {
@@ -61,6 +66,7 @@ const std::vector<DoubleField> kAllDoubleFields = [] {
   all.push_back({"drive_dead_time", &nc::AxisConfig::drive_dead_time});
   all.push_back({"sw_limit_min", &nc::AxisConfig::sw_limit_min});
   all.push_back({"sw_limit_max", &nc::AxisConfig::sw_limit_max});
+  all.push_back({"looping_distance", &nc::AxisConfig::looping_distance});
   return all;
 }();
 
@@ -244,7 +250,7 @@ TEST_CASE("an enum value outside the named ones is refused", "[config]") {
   auto e = error_of([&] { nc::validate(c); });
   REQUIRE(e);
   CHECK(e->pointer() == "/kind");
-  CHECK(e->rule() == R"(must be one of "continuous", "encoder")");
+  CHECK(e->rule() == R"(must be one of "continuous", "encoder", "two_speed")");
 
   c = named_axis();
   c.drive_model = static_cast<nc::DriveModel>(-1);

@@ -1,7 +1,8 @@
-// The ConfigError a JSON kernel set-up gives, if any, for configuration tests that check the
-// pointer and rule of a refusal.
+// The ConfigError a set-up gives, if any, for configuration tests that check the pointer and rule
+// of a refusal: of a JSON kernel set-up, or of any set-up call (a callable, e.g. validate()).
 #pragma once
 
+#include <concepts>
 #include <optional>
 
 #include <nlohmann/json.hpp>
@@ -13,6 +14,16 @@ namespace cfgtest {
 inline std::optional<nc::ConfigError> error_of(const nlohmann::json& document) {
   try {
     (void)nc::parse_kernel_setup(document);
+  } catch (const nc::ConfigError& e) {
+    return e;
+  }
+  return std::nullopt;
+}
+
+template <class F>
+requires std::invocable<F&> std::optional<nc::ConfigError> error_of(F&& f) {
+  try {
+    f();
   } catch (const nc::ConfigError& e) {
     return e;
   }

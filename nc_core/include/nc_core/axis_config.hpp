@@ -19,6 +19,7 @@ struct KernelConfig {
 enum class AxisKind {
   kContinuous,  // servo axis: position controller + drive model + encoder
   kEncoder,     // encoder / virtual axis: set = actual, no controller, no compensation
+  kTwoSpeed,    // two-speed (rapid/creep) discrete axis (SPEC E, seed 004); not yet driven
 };
 
 enum class DriveModel {
@@ -89,6 +90,24 @@ struct AxisConfig {
   // their native units load from the JSON "cnc" object (docs/configuration.md).
   bool recalc_link_main_input_position = false;  // P-AXIS-00436: forward mapping of d
   bool recalc_input_position_absolute = false;   // P-AXIS-00460: ... as if coupled at 0 (needs 436)
+
+  // Two-speed (rapid/creep) axis, kind kTwoSpeed (SPEC E, seed 004). Units mm, s; every value
+  // >= 0 and finite; per direction: braking distance <= creep distance. Ignored by other kinds.
+  double creep_distance_positive = 100.0;  // mm: rapid off this far before the target (or loop)
+  double creep_distance_negative = 100.0;
+  double braking_distance_positive = 5.0;  // mm: creep off this far before the target
+  double braking_distance_negative = 5.0;
+  double brake_incidence_delay_positive = 0.03;  // s: creep off → brake on
+  double brake_incidence_delay_negative = 0.03;
+  double rapid_to_creep_delay = 0.02;  // s: rapid off → creep on
+  double creep_distance_stop = 20.0;   // mm: creep travel after a stop is called
+  double brake_release_delay = 0.05;   // s: brake off → travel on
+  bool looping_distance_enabled = false;
+  double looping_distance = 30.0;  // mm, signed: > 0 approach from above, < 0 from below
+  // The simulated two-speed plant (E6).
+  double rapid_velocity = 500.0;     // mm/s, > 0
+  double creep_velocity = 50.0;      // mm/s, > 0, <= rapid_velocity
+  double two_speed_ramp_time = 0.1;  // s, >= 0: 0 → rapid_velocity (0 = a step)
 };
 
 }  // namespace nc

@@ -48,6 +48,11 @@ class ConfigError : public std::runtime_error {
 // struct ("/cycle_time", "/acceleration").
 void validate(const KernelConfig& config);
 void validate(const AxisConfig& config);
+// The rules between the two-speed fields, which validate() checks for a kTwoSpeed axis: per
+// direction braking distance <= creep distance; creep_velocity <= rapid_velocity; with looping
+// enabled |looping_distance| > braking_distance_positive + braking_distance_negative (so that the
+// return leg is always longer than its braking distance).
+void validate_two_speed(const AxisConfig& config);
 
 // A whole kernel set-up as read from JSON.
 struct KernelSetup {

@@ -80,6 +80,7 @@ struct EnumRule {
 inline constexpr EnumName<AxisKind> kAxisKindNames[] = {
     {AxisKind::kContinuous, "continuous"},
     {AxisKind::kEncoder, "encoder"},
+    {AxisKind::kTwoSpeed, "two_speed"},
 };
 inline constexpr EnumName<DriveModel> kDriveModelNames[] = {
     {DriveModel::kIdeal, "ideal"},
@@ -102,8 +103,8 @@ void visit_fields(Config& c, Visitor&& v) {
   v(FieldInfo{"name", "", "axis name, unique in a kernel; required"}, c.name, TextRule{true});
   v(FieldInfo{"id", "", "logical axis number (HLI ax_nr); 0 = assigned by the kernel"}, c.id,
     IntRule{0, INT_MAX});
-  v(FieldInfo{"kind", "", "continuous (servo) or encoder (set = actual)"}, c.kind,
-    EnumRule<AxisKind>{kAxisKindNames});
+  v(FieldInfo{"kind", "", "continuous (servo), encoder (set = actual) or two_speed (rapid/creep)"},
+    c.kind, EnumRule<AxisKind>{kAxisKindNames});
 
   v(FieldInfo{"max_velocity", "mm/s", "maximum velocity; a faster start is refused"},
     c.max_velocity, kPositive);
@@ -181,6 +182,40 @@ void visit_fields(Config& c, Visitor&& v) {
   v(FieldInfo{"recalc_input_position_absolute", "",
               "P-AXIS-00460: forward mapping as if coupled at position 0; needs P-AXIS-00436"},
     c.recalc_input_position_absolute, FlagRule{});
+
+  // Two-speed axis (SPEC E, seed 004); the rules between these fields: validate_two_speed().
+  v(FieldInfo{"creep_distance_positive", "mm",
+              "two-speed: rapid off this far before the target, +"},
+    c.creep_distance_positive, kNonNegative);
+  v(FieldInfo{"creep_distance_negative", "mm",
+              "two-speed: rapid off this far before the target, -"},
+    c.creep_distance_negative, kNonNegative);
+  v(FieldInfo{"braking_distance_positive", "mm",
+              "two-speed: creep off this far before the target, +"},
+    c.braking_distance_positive, kNonNegative);
+  v(FieldInfo{"braking_distance_negative", "mm",
+              "two-speed: creep off this far before the target, -"},
+    c.braking_distance_negative, kNonNegative);
+  v(FieldInfo{"brake_incidence_delay_positive", "s", "two-speed: creep off to brake on, +"},
+    c.brake_incidence_delay_positive, kNonNegative);
+  v(FieldInfo{"brake_incidence_delay_negative", "s", "two-speed: creep off to brake on, -"},
+    c.brake_incidence_delay_negative, kNonNegative);
+  v(FieldInfo{"rapid_to_creep_delay", "s", "two-speed: rapid off to creep on"},
+    c.rapid_to_creep_delay, kNonNegative);
+  v(FieldInfo{"creep_distance_stop", "mm", "two-speed: creep travel after a stop is called"},
+    c.creep_distance_stop, kNonNegative);
+  v(FieldInfo{"brake_release_delay", "s", "two-speed: brake off to travel on at a start"},
+    c.brake_release_delay, kNonNegative);
+  v(FieldInfo{"looping_distance_enabled", "", "two-speed: approach every target from one side"},
+    c.looping_distance_enabled, FlagRule{});
+  v(FieldInfo{"looping_distance", "mm", "two-speed: overshoot; > 0 approach from above, < 0 below"},
+    c.looping_distance, kAnyFinite);
+  v(FieldInfo{"rapid_velocity", "mm/s", "two-speed plant: rapid motor speed"}, c.rapid_velocity,
+    kPositive);
+  v(FieldInfo{"creep_velocity", "mm/s", "two-speed plant: creep motor speed, <= rapid_velocity"},
+    c.creep_velocity, kPositive);
+  v(FieldInfo{"two_speed_ramp_time", "s", "two-speed plant: time from 0 to rapid_velocity"},
+    c.two_speed_ramp_time, kNonNegative);
 }
 
 }  // namespace nc

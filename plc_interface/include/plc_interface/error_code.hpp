@@ -76,10 +76,11 @@ enum class ErrorCode : uint32_t {
   kUnknownCommand = 0x4F05,
   kAxisInErrorState = 0x4F06,  // motion refused until MC_Reset
   kDirectionInvalid = 0x4F07,
-  kInvalidAxisReference = 0x4F08,  // partner axis index unknown
-  kPlannerNoSolution = 0x4F09,     // the planner found no profile (internal; never expected)
-  kStateNotFinite = 0x4F0A,        // start state (p, v, a) NaN or infinite
-  kActualValueNotFinite = 0x4F0B,  // an actual value read by a block is NaN or infinite
+  kInvalidAxisReference = 0x4F08,      // partner axis index unknown
+  kPlannerNoSolution = 0x4F09,         // the planner found no profile (internal; never expected)
+  kStateNotFinite = 0x4F0A,            // start state (p, v, a) NaN or infinite
+  kActualValueNotFinite = 0x4F0B,      // an actual value read by a block is NaN or infinite
+  kTwoSpeedDistanceTooShort = 0x4F0C,  // two-speed start not farther than the braking distance
 
   // --- CNC HLI coupling IDs (decimal) ---
   kHliFractOnReferencedAxis = 70195,
