@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "axis/servo_axis.hpp"
+#include "kernel/hli_phase.hpp"
 #include "nc_core/config.hpp"
 #include "nc_core/profile.hpp"
 
@@ -15,6 +16,7 @@ namespace nc {
 
 Kernel::Kernel(KernelConfig config) : config_(config), scratch_(std::make_unique<Profile>()) {
   validate(config_);
+  hli_ = std::make_unique<detail::HliPhase>(config_.cycle_time);
 }
 
 Kernel::~Kernel() = default;
@@ -50,6 +52,7 @@ plc::AXIS_REF& Kernel::add_axis(const AxisConfig& config) {
   snapshots_.reserve(axes_.size() + 1);
   auto axis =
       std::make_unique<detail::ServoAxis>(effective, config_.cycle_time, axes_.size(), *scratch_);
+  hli_->add_axis(effective);
   couplings_.add_axis();
   snapshots_.emplace_back();
   axes_.push_back(std::move(axis));
@@ -76,13 +79,22 @@ const AxisConfig& Kernel::config(std::string_view name) const {
   return find(name).config();
 }
 
+std::span<plc::hli::HLI_AX* const> Kernel::gpAx() const noexcept {
+  return hli_->gpAx();
+}
+double Kernel::command_position_request(int ax_nr) const noexcept {
+  return hli_->command_position_request(ax_nr);
+}
+
 void Kernel::cycle() noexcept {
   const uint64_t counter = cycles_ + 1;
   const std::size_t n = axes_.size();
   // Without couplings no axis reads another, so the phases run over a block of kBlockAxes axes
   // before the next block: one block's data stays in the cache from phase (a) to (f). With
   // couplings the block is the whole kernel (a group reaction needs all its members' errors).
-  const std::size_t block = couplings_.has_couplings() ? n : kBlockAxes;
+  // So is an engaged HLI stage (phase (c) needs every axis's program position).
+  const bool hli = hli_->begin_cycle();
+  const std::size_t block = couplings_.has_couplings() || hli ? n : kBlockAxes;
   for (std::size_t first = 0; first < n; first += block)
     run_phases(first, std::min(n, first + block), counter);
   cycles_ = counter;
@@ -98,7 +110,9 @@ void Kernel::run_phases(std::size_t first, std::size_t last, uint64_t counter) n
     const uint32_t i = order[k];
     axes_[i]->phase_set_values(snapshots_[i]);
   }
-  // (c) couplings that act on drive positions: none until HLI coupling lands.
+  // (c) couplings that act on drive positions: the HLI stage, only while engaged (then the
+  // block is the whole kernel); otherwise the drive controls to the program's set values.
+  if (hli_->engaged()) hli_->run(axes_, snapshots_);
   // (d) position control, drive and encoder.
   for (std::size_t i = first; i < last; ++i)
     axes_[i]->phase_drive(snapshots_[i]);

@@ -14,6 +14,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -23,6 +24,7 @@
 #include "nc_core/axis_snapshot.hpp"
 #include "nc_core/coupling_graph.hpp"
 #include "plc_interface/axis_ref.hpp"
+#include "plc_interface/hli.hpp"
 
 namespace nc {
 
@@ -30,6 +32,7 @@ class Profile;
 
 namespace detail {
 class ServoAxis;
+class HliPhase;
 }  // namespace detail
 
 class Kernel {
@@ -71,6 +74,14 @@ class Kernel {
   // Who follows whom (empty until coupling lands).
   const CouplingGraph& couplings() const noexcept { return couplings_; }
 
+  // HLI axis coupling (SPEC D1, seed 002): gpAx[axis_idx], the CNC control unit of each axis,
+  // indexed by axis index (the order of add_axis); the pointers stay valid for the kernel's life.
+  std::span<plc::hli::HLI_AX* const> gpAx() const noexcept;
+  // D5: the program coordinate #CHANNEL INIT [CMDPOS] would give logical axis `ax_nr`
+  // (AxisConfig::id) now: the drive position by default, solved through its list with
+  // P-AXIS-00436 / 00460. NaN for an unknown axis number.
+  double command_position_request(int ax_nr) const noexcept;
+
   double cycle_time() const noexcept { return config_.cycle_time; }
   // Completed NC cycles since the kernel was made.
   uint64_t cycle_count() const noexcept { return cycles_; }
@@ -89,6 +100,8 @@ class Kernel {
   std::vector<std::unique_ptr<detail::ServoAxis>> axes_;
   std::vector<AxisSnapshot> snapshots_;
   CouplingGraph couplings_;
+  // Phase (c): the HLI coupling stage (on the heap: its control units keep their addresses).
+  std::unique_ptr<detail::HliPhase> hli_;
   // One planning scratch profile for all axes (a start plans here first, so a refusal changes
   // nothing); on the heap so that its address survives a move of the Kernel.
   std::unique_ptr<Profile> scratch_;

@@ -25,16 +25,17 @@ void ServoAxis::phase_publish(uint64_t cycle_counter) noexcept {
   const bool error = channel_.has_error();
   const JobKind kind = job_.kind();
 
-  out.SetPos = set_.p;
-  out.SetVelo = set_.v;
-  out.SetAcc = set_.a;
+  const KinematicState& command = drive_command();  // d: the set values phase (d) controls to
+  out.SetPos = command.p;
+  out.SetVelo = command.v;
+  out.SetAcc = command.a;
   out.SetJerk = set_jerk_;
   out.ActPos = actual;
   out.ActVelo = drive_.velocity();
   out.ActAcc = drive_.acceleration();
-  out.PosDiff = set_.p - actual;
+  out.PosDiff = command.p - actual;
   out.ModuloActPos = modulo(actual, config_.modulo_factor);
-  out.ModuloSetPos = modulo(set_.p, config_.modulo_factor);
+  out.ModuloSetPos = modulo(command.p, config_.modulo_factor);
   out.TargetPos = target_;
   out.TargetVelo = job_.active() ? job_.target_velocity() : 0.0;
   out.CompensationDistance = stack_.compensation().done();  // travel-relative, as D

@@ -24,6 +24,7 @@ ServoAxis::ServoAxis(const AxisConfig& config, double cycle_time, std::size_t in
 
 void ServoAxis::phase_commands() noexcept {
   error_event_ = false;
+  drive_command_given_ = false;
   read_override();
   handle_commands();
   check_enables();
@@ -37,8 +38,16 @@ void ServoAxis::phase_set_values(AxisSnapshot& snapshot) noexcept {
   snapshot.set_acceleration = set_.a;
 }
 
+void ServoAxis::phase_drive_command(const KinematicState& drive, ErrorCode stop) noexcept {
+  if (stop != ErrorCode::kNone) raise_error(stop);
+  drive_command_ = drive;
+  drive_offset_ = drive.p - set_.p;
+  drive_command_given_ = true;
+}
+
 void ServoAxis::phase_drive(AxisSnapshot& snapshot) noexcept {
   control_and_drive();
+  previous_drive_position_ = drive_command().p;
   snapshot.set_position = set_.p;  // without the controller enable it follows the actual one
   snapshot.set_velocity = set_.v;
   snapshot.set_acceleration = set_.a;
@@ -142,26 +151,29 @@ SetValueSource ServoAxis::source() const noexcept {
 void ServoAxis::control_and_drive() noexcept {
   if (config_.kind == AxisKind::kEncoder) {
     // Encoder / virtual axis: no controller, the actual values are the set values.
-    drive_.follow(set_.p, set_.v, set_.a);
+    const KinematicState& command = drive_command();
+    drive_.follow(command.p, command.v, command.a);
     return;
   }
   if (!channel_.controller_enabled()) {
     // TwinCAT: without controller enable the drive is off and the set position follows the
     // actual position, so there is no following error to jump at when the enable returns.
     drive_.step(0.0, false);
-    set_ = KinematicState{drive_.measured_position(), 0.0, 0.0};
+    drive_command_ = KinematicState{drive_.measured_position(), 0.0, 0.0};
+    set_ = KinematicState{drive_.measured_position() - drive_offset_, 0.0, 0.0};
     target_ = set_.p;
     return;
   }
+  const double previous = drive_command_given_ ? previous_drive_position_ : previous_set_position_;
   const double command =
-      controller_.command(previous_set_position_, set_.p, drive_.measured_position(), cycle_time_);
+      controller_.command(previous, drive_command().p, drive_.measured_position(), cycle_time_);
   drive_.step(command, true);
 }
 
 void ServoAxis::run_monitors() noexcept {
   const double actual = drive_.measured_position();
   const bool armed = channel_.controller_enabled() && !channel_.has_error();
-  if (monitors_.following_error(set_.p - actual, armed)) {
+  if (monitors_.following_error(drive_command().p - actual, armed)) {
     raise_error(ErrorCode::kFollowingErrorPosition);
   }
   // Software limits during motion: the set position passes an enabled limit while it moves
@@ -179,7 +191,7 @@ void ServoAxis::run_monitors() noexcept {
   const bool settled =
       channel_.controller_enabled() && !stack_.external().moving() &&
       (!job_.active() || (job_.kind() != JobKind::kVelocity && job_.generation_ended()));
-  monitors_.windows(actual, target_, settled);
+  monitors_.windows(actual - drive_offset_, target_, settled);  // in program coordinates
 }
 
 void ServoAxis::finish_job() noexcept {
@@ -243,7 +255,7 @@ void ServoAxis::reset_error() noexcept {
   channel_.clear_error();
   if (!job_.active()) {
     // The axis holds where it stands: no following error is carried over into the next start.
-    set_ = KinematicState{drive_.measured_position(), 0.0, 0.0};
+    set_ = KinematicState{drive_.measured_position() - drive_offset_, 0.0, 0.0};
     set_jerk_ = 0.0;
     target_ = set_.p;
     monitors_.reset_windows();

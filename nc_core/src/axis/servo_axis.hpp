@@ -40,9 +40,14 @@ class ServoAxis {
   // calls each for every axis before the next. The snapshot is what other axes may read.
   void phase_commands() noexcept;                          // (a)
   void phase_set_values(AxisSnapshot& snapshot) noexcept;  // (b)
-  void phase_drive(AxisSnapshot& snapshot) noexcept;       // (d)
-  void phase_monitors(AxisSnapshot& snapshot) noexcept;    // (e)
-  void phase_publish(uint64_t cycle_counter) noexcept;     // (f)
+  // (c) HLI coupling (SPEC D3), called only while the kernel's coupling stage is engaged: the
+  // set values phase (d) controls to this cycle (NcToPlc.SetPos; without a call they are the
+  // program's set values), and `stop` != kNone raises that axis error (program on its emergency
+  // ramp). The windows and software limits stay in program coordinates (actual − (d − q)).
+  void phase_drive_command(const KinematicState& drive, ErrorCode stop) noexcept;
+  void phase_drive(AxisSnapshot& snapshot) noexcept;     // (d)
+  void phase_monitors(AxisSnapshot& snapshot) noexcept;  // (e)
+  void phase_publish(uint64_t cycle_counter) noexcept;   // (f)
 
  private:
   // --- commands.cpp ---
@@ -147,6 +152,15 @@ class ServoAxis {
 
   KinematicState set_{};   // set values of this cycle (basic motion + superpositions)
   KinematicState base_{};  // the basic source's own set values
+  // Phase (c): what phase (d) controls to when given this cycle (else set_), and d − q of the
+  // last cycle it was given (0 without HLI coupling): program coordinate = drive − offset.
+  KinematicState drive_command_{};
+  double previous_drive_position_ = 0.0;
+  double drive_offset_ = 0.0;
+  bool drive_command_given_ = false;
+  const KinematicState& drive_command() const noexcept {
+    return drive_command_given_ ? drive_command_ : set_;
+  }
   SuperpositionStack stack_{};
   double set_jerk_ = 0.0;
   double previous_set_position_ = 0.0;

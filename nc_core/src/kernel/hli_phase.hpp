@@ -1,0 +1,53 @@
+// Phase (c) of the NC cycle: the HLI coupling stage (SPEC D3–D5, seed 002) run over the kernel's
+// axes. It owns the stage (nc::hli::HliStage) and the per-axis arrays the stage reads and writes,
+// all sized in add_axis, so run() allocates nothing.
+//
+// The stage is "engaged" while it can make any drive position d differ from the program position
+// q: a list in force, a stopped target braking, an offset left by a list switched off, or a
+// semaphore set by the PLC. Only then does the kernel run phase (c) (and the whole kernel as one
+// block, since the stage needs every axis's q); otherwise d = q and phase (c) costs one flag read
+// per axis and cycle (the semaphores).
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "hli/hli_stage.hpp"
+#include "nc_core/axis_config.hpp"
+#include "nc_core/axis_snapshot.hpp"
+#include "plc_interface/error_code.hpp"
+#include "plc_interface/hli.hpp"
+
+namespace nc::detail {
+
+class ServoAxis;
+
+class HliPhase {
+ public:
+  explicit HliPhase(double cycle_time) : stage_(cycle_time) {}
+
+  // Set-up: the axis with its effective configuration (id assigned); index = axes so far.
+  plc::hli::HLI_AX& add_axis(const AxisConfig& effective);
+
+  std::span<plc::hli::HLI_AX* const> gpAx() const noexcept { return stage_.gpAx(); }
+  // D5; NaN for an unknown logical axis number.
+  double command_position_request(int ax_nr) const noexcept;
+
+  // Cycle, before phase (a): whether phase (c) runs in this cycle (see above).
+  bool begin_cycle() noexcept;
+  bool engaged() const noexcept { return engaged_; }
+  // Cycle, phase (c), over all axes: q from the snapshots of phase (b), d into each axis.
+  void run(std::span<const std::unique_ptr<ServoAxis>> axes,
+           std::span<const AxisSnapshot> snapshots) noexcept;
+
+ private:
+  hli::HliStage stage_;
+  std::vector<double> q_, qv_, qa_, d_, dv_, da_;
+  std::unique_ptr<bool[]> referenced_;
+  std::vector<plc::ErrorCode> stop_;
+  bool engaged_ = false;
+};
+
+}  // namespace nc::detail
