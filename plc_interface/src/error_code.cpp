@@ -133,6 +133,8 @@ std::string_view error_text(ErrorCode code) noexcept {
       return "actual value is not a finite number";
     case E::kStateNotFinite:
       return "start state is not finite";
+    case E::kCouplingLoop:
+      return "coupling would close a loop (or master = slave)";
     case E::kHliFractOnReferencedAxis:
       return "FRACT coupling: the axis cannot stop before a software limit";
     case E::kHliChangeWhileMoving:
