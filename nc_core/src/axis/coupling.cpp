@@ -64,6 +64,8 @@ ErrorCode ServoAxis::gear_in(const plc::Command& command, CouplingPort& port) no
   ++master.slave_count_;
   const uint16_t running = job_.active() ? job_.number() : 0;
   slave_link_.couple(master_index, command.number, command.ratio, set_.p, master.set_.p);
+  // A held offset of a compensation that ended in the last cycle is in set_.p, so in the offset.
+  stack_.drop_held();
   channel_.take_over(command.number, running);
   channel_.answer_current(CommandState::kReached);  // InGear at once: the coupling is logical
   monitors_.reset_windows();
