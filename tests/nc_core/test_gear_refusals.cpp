@@ -52,6 +52,7 @@ TEST_CASE("refused couplings change nothing and carry their codes", "[gear][refu
   using E = plc::ErrorCode;
   gr::TwinRigs t = make_twins();
   REQUIRE(t.probe.at(4).NcToPlc.CoupleState == 2U);
+  CHECK(plc::to_id(E::kCouplingLoop) == 0x4F0DU);  // ncsdk's own code (NC_ERROR_CODES.md style)
   const Case cases[] = {
       {"factor NaN", 1, gr::gear_in(0, kt::kNaN), E::kParameterNotFinite},
       {"factor inf", 1, gr::gear_in(0, kt::kInf), E::kParameterNotFinite},

@@ -80,7 +80,7 @@ enum class ErrorCode : uint32_t {
   kPlannerNoSolution = 0x4F09,     // the planner found no profile (internal; never expected)
   kStateNotFinite = 0x4F0A,        // start state (p, v, a) NaN or infinite
   kActualValueNotFinite = 0x4F0B,  // an actual value read by a block is NaN or infinite
-  kCouplingLoop = 0x4F0C,          // coupling would close a loop (also master = slave)
+  kCouplingLoop = 0x4F0D,          // coupling would close a loop (also master = slave)
 
   // --- CNC HLI coupling IDs (decimal) ---
   kHliFractOnReferencedAxis = 70195,
