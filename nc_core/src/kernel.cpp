@@ -89,8 +89,13 @@ double Kernel::command_position_request(int ax_nr) const noexcept {
 void Kernel::cycle() noexcept {
   const uint64_t counter = cycles_ + 1;
   const std::size_t n = axes_.size();
+  // (a) commands of every axis first: a coupling command (MC_GearIn / MC_GearOut) reads other
+  // axes and changes the graph, so the order and the blocks below are those after it.
+  detail::CouplingPort port{axes_, couplings_};
+  for (std::size_t i = 0; i < n; ++i)
+    axes_[i]->phase_commands(port);
   // Without couplings no axis reads another, so the phases run over a block of kBlockAxes axes
-  // before the next block: one block's data stays in the cache from phase (a) to (f). With
+  // before the next block: one block's data stays in the cache from phase (b) to (f). With
   // couplings the block is the whole kernel (a group reaction needs all its members' errors).
   // So is an engaged HLI stage (phase (c) needs every axis's program position).
   const bool hli = hli_->begin_cycle();
@@ -102,13 +107,11 @@ void Kernel::cycle() noexcept {
 
 void Kernel::run_phases(std::size_t first, std::size_t last, uint64_t counter) noexcept {
   const std::span<const uint32_t> order = couplings_.order();
-  // (a) commands: mailbox, enables, override and the online functions.
-  for (std::size_t i = first; i < last; ++i)
-    axes_[i]->phase_commands();
+  // (a) commands: mailbox, enables, override and the online functions ran in cycle().
   // (b) set values, every master before its slaves (index order while nothing is coupled).
   for (std::size_t k = first; k < last; ++k) {
     const uint32_t i = order[k];
-    axes_[i]->phase_set_values(snapshots_[i]);
+    axes_[i]->phase_set_values(snapshots_[i], snapshots_);
   }
   // (c) couplings that act on drive positions: the HLI stage, only while engaged (then the
   // block is the whole kernel); otherwise the drive controls to the program's set values.

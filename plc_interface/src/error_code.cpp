@@ -135,6 +135,8 @@ std::string_view error_text(ErrorCode code) noexcept {
       return "start state is not finite";
     case E::kTwoSpeedDistanceTooShort:
       return "two-speed axis: distance to the target not larger than the braking distance";
+    case E::kCouplingLoop:
+      return "coupling would close a loop (or master = slave)";
     case E::kHliFractOnReferencedAxis:
       return "FRACT coupling: the axis cannot stop before a software limit";
     case E::kHliChangeWhileMoving:

@@ -16,6 +16,7 @@ struct AxisSnapshot {
   double set_position = 0.0;
   double set_velocity = 0.0;
   double set_acceleration = 0.0;
+  double set_jerk = 0.0;
   double actual_position = 0.0;
   double actual_velocity = 0.0;
   double actual_acceleration = 0.0;

@@ -22,16 +22,21 @@ double velocity_direction(int32_t direction) noexcept {
 
 }  // namespace
 
-void ServoAxis::handle_commands() noexcept {
+void ServoAxis::handle_commands(CouplingPort& port) noexcept {
   plc::CommandMailbox& mailbox = channel_.ref().Mailbox;
   if (mailbox.pending() == 0) return;  // the steady case: no call into the mailbox
   plc::Command command;
   while (mailbox.take(command))
-    handle(command);
+    handle(command, port);
 }
 
-void ServoAxis::handle(const plc::Command& command) noexcept {
+void ServoAxis::handle(const plc::Command& command, CouplingPort& port) noexcept {
   ErrorCode code = ErrorCode::kNone;
+  if (slave_link_.coupled && refused_while_coupled(command.type)) {
+    channel_.answer(command.number, CommandState::kError,
+                    plc::to_id(ErrorCode::kFunctionNotAllowed));
+    return;
+  }
   switch (command.type) {
     case CommandType::kMoveAbsolute:
     case CommandType::kMoveRelative:
@@ -65,6 +70,12 @@ void ServoAxis::handle(const plc::Command& command) noexcept {
     case CommandType::kExtSetPointGenDisable:
       code = disable_external(command);
       break;
+    case CommandType::kGearIn:
+      code = gear_in(command, port);
+      break;
+    case CommandType::kGearOut:
+      code = gear_out(command, port);
+      break;
     case CommandType::kReset:
       // Answered at once and without taking CmdNo: a reset is not a job. It also cancels an
       // MC_Stop lock (Tc2_MC2: "the locking of the axis is canceled with an MC_Reset").
@@ -78,7 +89,7 @@ void ServoAxis::handle(const plc::Command& command) noexcept {
       channel_.answer(command.number, CommandState::kDone);
       return;
     default:
-      // Coupling and homing come with later issues; until then the kernel refuses them by name.
+      // MC_GearInDyn and homing come with later issues; until then the kernel refuses them.
       code = ErrorCode::kUnknownCommand;
       break;
   }

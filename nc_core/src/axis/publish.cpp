@@ -42,7 +42,13 @@ void ServoAxis::phase_publish(uint64_t cycle_counter) noexcept {
   out.CompensationLength = stack_.compensation().length();
   out.CompensationVelocityDiff = stack_.compensation().velocity_diff();
   channel_.publish(static_cast<int32_t>(index_));
-  out.CoupleState = static_cast<uint32_t>(plc::CoupleState::kSingle);
+  const bool slave = slave_link_.coupled;
+  const bool master = slave_count_ > 0;
+  const plc::CoupleState couple =
+      slave ? (master ? plc::CoupleState::kMasterAndSlave : plc::CoupleState::kSlave)
+            : (master ? plc::CoupleState::kMaster : plc::CoupleState::kSingle);
+  out.CoupleState = static_cast<uint32_t>(couple);
+  out.GearRatio = slave ? slave_link_.factor : 0.0;
   out.CycleCounter = static_cast<uint32_t>(cycle_counter);
 
   // Constant velocity: a velocity job at its level, or the cruise phase of a positioning.
@@ -68,6 +74,7 @@ void ServoAxis::phase_publish(uint64_t cycle_counter) noexcept {
   set_bit(plc::kStateConstantVelocity, constant_velocity);
   set_bit(plc::kStateCompensating, stack_.compensation().running());
   set_bit(plc::kStateExtSetPointGenEnabled, stack_.external().enabled());
+  set_bit(plc::kStateCoupled, slave);
   set_bit(plc::kStateContinuousMotion, kind == JobKind::kVelocity);
   set_bit(plc::kStatePtpMode, true);
   set_bit(plc::kStateSoftLimitMinExceeded, monitors_.below_min(actual));
@@ -82,6 +89,8 @@ void ServoAxis::phase_publish(uint64_t cycle_counter) noexcept {
     state = AxisState::kErrorStop;
   } else if (!enabled) {
     state = AxisState::kDisabled;
+  } else if (slave) {
+    state = AxisState::kSynchronizedMotion;  // also while the master stands still (issue 9)
   } else if (locked_ || kind == JobKind::kStop || kind == JobKind::kEmergencyStop) {
     state = AxisState::kStopping;
   } else if (kind == JobKind::kPosition || kind == JobKind::kHalt) {

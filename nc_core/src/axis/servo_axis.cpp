@@ -22,20 +22,22 @@ ServoAxis::ServoAxis(const AxisConfig& config, double cycle_time, std::size_t in
   phase_publish(0);
 }
 
-void ServoAxis::phase_commands() noexcept {
+void ServoAxis::phase_commands(CouplingPort& port) noexcept {
   error_event_ = false;
   drive_command_given_ = false;
   read_override();
-  handle_commands();
+  handle_commands(port);
   check_enables();
   run_online_functions();
 }
 
-void ServoAxis::phase_set_values(AxisSnapshot& snapshot) noexcept {
-  generate_set_values();
+void ServoAxis::phase_set_values(AxisSnapshot& snapshot,
+                                 std::span<const AxisSnapshot> snapshots) noexcept {
+  generate_set_values(snapshots);
   snapshot.set_position = set_.p;
   snapshot.set_velocity = set_.v;
   snapshot.set_acceleration = set_.a;
+  snapshot.set_jerk = set_jerk_;
 }
 
 void ServoAxis::phase_drive_command(const KinematicState& drive, ErrorCode stop) noexcept {
@@ -88,11 +90,13 @@ void ServoAxis::check_enables() noexcept {
   }
 }
 
-void ServoAxis::generate_set_values() noexcept {
+void ServoAxis::generate_set_values(std::span<const AxisSnapshot> snapshots) noexcept {
   previous_set_position_ = set_.p;
   if (!channel_.controller_enabled()) {
     set_jerk_ = 0.0;            // no generation: control_and_drive() makes the set position follow
     end_external_generation();  // seed 000 §2.6: the controller enable's edge switches it off
+    // A coupled slave follows again from where it stands when the enable returns.
+    slave_link_.retake_offset = slave_link_.coupled;
     return;
   }
   bool not_finite = false;
@@ -109,6 +113,12 @@ void ServoAxis::generate_set_values() noexcept {
       set_jerk_ = 0.0;
       not_finite = step.not_finite;
       absolute_ended = step.finished;
+      break;
+    }
+    case SetValueSource::kSlaveLink: {
+      const AxisSnapshot& master = snapshots[slave_link_.master];
+      base_ = slave_link_.sample(master, set_.p);
+      set_jerk_ = slave_link_.factor * master.set_jerk;
       break;
     }
     case SetValueSource::kHold:
@@ -140,6 +150,7 @@ void ServoAxis::generate_set_values() noexcept {
 }
 
 SetValueSource ServoAxis::source() const noexcept {
+  if (slave_link_.coupled) return SetValueSource::kSlaveLink;  // a coupled slave has no job
   if (job_.active()) return SetValueSource::kPtpJob;
   const ExternalSetpoint& external = stack_.external();
   if (external.taking() && external.type() == ExternalSetpoint::Type::kAbsolute) {
@@ -189,7 +200,7 @@ void ServoAxis::run_monitors() noexcept {
   // generator (seed 000 §2.6) is not feeding a motion (direction ±1), so a fed motion passing
   // through its target window is not "in target position".
   const bool settled =
-      channel_.controller_enabled() && !stack_.external().moving() &&
+      channel_.controller_enabled() && !stack_.external().moving() && !slave_link_.coupled &&
       (!job_.active() || (job_.kind() != JobKind::kVelocity && job_.generation_ended()));
   monitors_.windows(actual - drive_offset_, target_, settled);  // in program coordinates
 }
@@ -232,6 +243,8 @@ void ServoAxis::raise_error(ErrorCode code) noexcept {
   }
   // The compensation fails with the axis; external generation is switched off (seed 000 §2.6).
   fold_superpositions(CommandState::kError, code);
+  // A coupled slave's motion is its master's: it goes on following (group reactions: SPEC C7).
+  if (slave_link_.coupled) return;
   if (!channel_.controller_enabled()) {
     job_.clear();
     return;
@@ -253,7 +266,7 @@ void ServoAxis::reset_error() noexcept {
   channel_.clear_warnings();
   if (!channel_.has_error()) return;
   channel_.clear_error();
-  if (!job_.active()) {
+  if (!job_.active() && !slave_link_.coupled) {
     // The axis holds where it stands: no following error is carried over into the next start.
     set_ = KinematicState{drive_.measured_position() - drive_offset_, 0.0, 0.0};
     set_jerk_ = 0.0;

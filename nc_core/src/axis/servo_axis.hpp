@@ -10,6 +10,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
+#include <span>
 
 #include "axis/axis_channel.hpp"
 #include "axis/compensation.hpp"
@@ -19,13 +21,24 @@
 #include "axis/monitors.hpp"
 #include "axis/position_controller.hpp"
 #include "axis/set_value_source.hpp"
+#include "axis/slave_link.hpp"
 #include "axis/superposition_stack.hpp"
 #include "nc_core/axis_config.hpp"
 #include "nc_core/axis_snapshot.hpp"
+#include "nc_core/coupling_graph.hpp"
 #include "nc_core/profile.hpp"
 #include "plc_interface/axis_ref.hpp"
 
 namespace nc::detail {
+
+class ServoAxis;
+
+// What the commands phase of one axis may reach of the others (MC_GearIn / MC_GearOut): the
+// kernel's axes by index and its coupling graph. The kernel builds it for each cycle.
+struct CouplingPort {
+  std::span<const std::unique_ptr<ServoAxis>> axes;
+  CouplingGraph& graph;
+};
 
 class ServoAxis {
  public:
@@ -38,8 +51,9 @@ class ServoAxis {
 
   // The phases of one NC cycle (steps a … f of docs/architecture.md "One tick"); the kernel
   // calls each for every axis before the next. The snapshot is what other axes may read.
-  void phase_commands() noexcept;                          // (a)
-  void phase_set_values(AxisSnapshot& snapshot) noexcept;  // (b)
+  void phase_commands(CouplingPort& port) noexcept;  // (a)
+  // (b); `snapshots`: every axis's, a slave reads its master's (computed before it this cycle).
+  void phase_set_values(AxisSnapshot& snapshot, std::span<const AxisSnapshot> snapshots) noexcept;
   // (c) HLI coupling (SPEC D3), called only while the kernel's coupling stage is engaged: the
   // set values phase (d) controls to this cycle (NcToPlc.SetPos; without a call they are the
   // program's set values), and `stop` != kNone raises that axis error (program on its emergency
@@ -51,8 +65,8 @@ class ServoAxis {
 
  private:
   // --- commands.cpp ---
-  void handle_commands() noexcept;
-  void handle(const plc::Command& command) noexcept;
+  void handle_commands(CouplingPort& port) noexcept;
+  void handle(const plc::Command& command, CouplingPort& port) noexcept;
   ErrorCode start_position(const plc::Command& command) noexcept;
   ErrorCode start_velocity(const plc::Command& command) noexcept;
   ErrorCode start_halt_or_stop(const plc::Command& command) noexcept;
@@ -74,7 +88,7 @@ class ServoAxis {
   // --- servo_axis.cpp ---
   void check_enables() noexcept;
   // Step b: the basic source's set values, then the superposition stack on top.
-  void generate_set_values() noexcept;
+  void generate_set_values(std::span<const AxisSnapshot> snapshots) noexcept;
   // The one basic source of this cycle (set_value_source.hpp).
   SetValueSource source() const noexcept;
   void control_and_drive() noexcept;
@@ -122,6 +136,16 @@ class ServoAxis {
   // superpositions on top.
   void install_table(double target, bool final, double level) noexcept;
 
+  // --- coupling.cpp (C1, C3, C4 at rest; seed 000 §3.2.2-3.2.3) ---
+  ErrorCode gear_in(const plc::Command& command, CouplingPort& port) noexcept;
+  ErrorCode gear_out(const plc::Command& command, CouplingPort& port) noexcept;
+  // At rest for a coupling: no job, set velocity and acceleration 0, no compensation running,
+  // no external generation enabled (seed 000 §3.2.2 "both axes are stationary").
+  bool at_rest_for_coupling() const noexcept;
+  // A coupled slave refuses this command (0x424E): starts, stops, new positions, compensation
+  // (until C5) and external setpoint generation.
+  static bool refused_while_coupled(plc::CommandType type) noexcept;
+
   // --- modulo.cpp (B1 modulo start, seed 000 §2.1) ---
   ErrorCode start_modulo(const plc::Command& command) noexcept;
 
@@ -162,6 +186,8 @@ class ServoAxis {
     return drive_command_given_ ? drive_command_ : set_;
   }
   SuperpositionStack stack_{};
+  SlaveLink slave_link_{};
+  uint32_t slave_count_ = 0;  // axes coupled to this one as their master
   double set_jerk_ = 0.0;
   double previous_set_position_ = 0.0;
   double previous_measured_ = 0.0;

@@ -4,7 +4,8 @@
 // every place that must handle it. Superpositions come on top (superposition_stack.hpp).
 //
 // The sources' state lives with them: the PTP job in MasterJob (master_job.hpp), the absolute
-// external generator in ExternalSetpoint (external_setpoint.hpp); a hold has none.
+// external generator in ExternalSetpoint (external_setpoint.hpp), the coupling in SlaveLink
+// (slave_link.hpp); a hold has none.
 // Real-time contract: the choice and the sampling are cycle functions (noexcept, no allocation).
 #pragma once
 
@@ -17,7 +18,8 @@ enum class SetValueSource : uint8_t {
   kPtpJob,            // MasterJob: positioning, velocity, halt, stop or the error ramp, with the
                       // online functions (override, new end position, new velocity)
   kExternalAbsolute,  // ExternalSetpoint of type absolute: the PLC's set values (seed 000 §2.6)
-  // Next: kSlaveLink (coupling), kHomingJob (homing), kTwoSpeedSequencer (two-speed axis).
+  kSlaveLink,         // SlaveLink: factor × the master's set values + offset (SPEC C1)
+  // Next: kHomingJob (homing), kTwoSpeedSequencer (two-speed axis).
 };
 
 }  // namespace nc::detail

@@ -28,6 +28,9 @@ enum StateBit : uint32_t {
   kStateConstantVelocity = 12,
   kStateCompensating = 13,
   kStateExtSetPointGenEnabled = 14,
+  // The coupling flag (seed 000 §3.2.1): set while the axis is a coupled slave. TwinCAT shows
+  // coupling in CoupleState and publishes no StateDWord bit for it, so ncsdk uses the free bit 15.
+  kStateCoupled = 15,
   kStateNewTargetPos = 17,
   kStateContinuousMotion = 19,
   kStatePtpMode = 25,
@@ -92,6 +95,8 @@ struct NCTOPLC_AXIS_REF {
   // distance when shorter) and the signed peak extra velocity (at most VK).
   double CompensationLength = 0.0;
   double CompensationVelocityDiff = 0.0;
+  // The coupling factor in force while the axis is a coupled slave (SPEC C1); 0 otherwise.
+  double GearRatio = 0.0;
 };
 
 struct PLCTONC_AXIS_REF {

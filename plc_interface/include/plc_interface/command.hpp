@@ -55,10 +55,11 @@ enum class CommandType : uint16_t {
   kAbortSuperposition = 12,    // compensation stop
   kExtSetPointGenEnable = 13,  // position = target for window monitoring, mode = E_PositionType
   kExtSetPointGenDisable = 14,
-  kGearIn = 15,     // ratio, other_axis = master
+  kGearIn = 15,     // ratio (factor, finite, != 0), other_axis = master (NcToPlc.AxisIndex);
+                    // posted to the slave's mailbox
   kGearInDyn = 16,  // ratio (initial), acceleration = AccBound, other_axis = master
-  kGearOut = 17,
-  kHome = 18,  // position = home position, mode = homing mode
+  kGearOut = 17,    // posted to the slave's mailbox
+  kHome = 18,       // position = home position, mode = homing mode
 };
 
 // Lifecycle of one command number, as the NC reports it in the answer table.

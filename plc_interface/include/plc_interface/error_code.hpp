@@ -81,6 +81,7 @@ enum class ErrorCode : uint32_t {
   kStateNotFinite = 0x4F0A,            // start state (p, v, a) NaN or infinite
   kActualValueNotFinite = 0x4F0B,      // an actual value read by a block is NaN or infinite
   kTwoSpeedDistanceTooShort = 0x4F0C,  // two-speed start not farther than the braking distance
+  kCouplingLoop = 0x4F0D,              // coupling would close a loop (also master = slave)
 
   // --- CNC HLI coupling IDs (decimal) ---
   kHliFractOnReferencedAxis = 70195,
