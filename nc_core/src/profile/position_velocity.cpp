@@ -1,0 +1,163 @@
+// plan_position with an end velocity: time-optimal motion from any state to (target, v_end, 0).
+//
+// The same construction as the stop at a target (position.cpp), with the stop replaced by the
+// time-optimal velocity change to v_end: push = the velocity change towards ±V (then cruise at
+// ±V) for a time tau, then the change to v_end from the state reached. The point E(tau) where
+// that change ends moves towards the push direction, from E(0) (the change straight from the
+// start) to infinity; so the direction is the side of the target relative to E(0), and tau is
+// the root of E(tau) = target. A target behind E(0) gives a push the other way: the velocity goes
+// below v_end (through v = 0 where needed: a run-up backwards) and the change brings it back.
+// The change to v_end has no closed-form distance here (it may cross v = 0, where the bounds
+// change), so tau is found by a bracketed regula falsi (Illinois) on the pieces' own integrated
+// distance, first bracketed between the push's piece boundaries. v_end = 0 is plan_position's
+// three-argument call itself (bit for bit).
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+
+#include "nc_core/profile.hpp"
+#include "profile/profile_writer.hpp"
+#include "profile/validate.hpp"
+#include "profile/velocity_change.hpp"
+
+namespace nc {
+namespace {
+
+using detail::Bounds;
+using detail::Piece;
+
+constexpr double kRootTolerance = 1e-13;
+
+// Appends the push (mirrored by `dir`), a cruise, the change, and closes exactly on
+// (target, v_end, 0); everything after the push is anchored back from that end.
+Profile finish_moving(const KinematicState& start, double target, double v_end, double dir,
+                      const Piece* head, int n_head, double cruise, const Piece* tail,
+                      int n_tail) noexcept {
+  Profile profile;
+  detail::ProfileWriter writer(profile, start);
+  for (int i = 0; i < n_head; ++i)
+    writer.append(head[i], dir);
+  const std::size_t tail_start = writer.count();
+  writer.append(cruise, 0.0, NAN, NAN);
+  for (int i = 0; i < n_tail; ++i)
+    writer.append(tail[i], dir);
+  const KinematicState end{target, v_end, 0.0};
+  writer.close(&end, true);
+  profile.anchor_to_end(tail_start);
+  if (!detail::profile_finite(profile)) profile = Profile::failure(ErrorCode::kPlannerNoSolution);
+  return profile;
+}
+
+// Distance of the time-optimal change (v, a) -> v1; NaN if the walk does not close.
+double change_distance(double v, double a, double v1, const Bounds& b) noexcept {
+  detail::PieceBuffer<detail::kMaxChangePieces> room;
+  const int n = detail::velocity_change(v, a, v1, b, room.items);
+  if (n < 0) return NAN;
+  return detail::pieces_distance(v, a, room.items, n);
+}
+
+}  // namespace
+
+Profile plan_position(const KinematicState& start, double target, double target_velocity,
+                      const Limits& limits) noexcept {
+  ErrorCode e = detail::check_state(start);
+  if (e == ErrorCode::kNone && !std::isfinite(target)) e = ErrorCode::kPositionNotFinite;
+  if (e == ErrorCode::kNone) e = detail::check_limits(limits);
+  if (e == ErrorCode::kNone && !std::isfinite(target_velocity)) {
+    e = ErrorCode::kParameterNotFinite;
+  }
+  if (e == ErrorCode::kNone && std::abs(target_velocity) > limits.velocity) {
+    e = ErrorCode::kVelocityNotAllowed;
+  }
+  if (e != ErrorCode::kNone) return Profile::failure(e);
+  if (target_velocity == 0.0) return plan_position(start, target, limits);
+
+  const Bounds bounds{limits.acceleration, limits.deceleration, limits.jerk};
+  const double distance = target - start.p;
+  const double v_end = target_velocity;
+
+  detail::PieceBuffer<detail::kMaxChangePieces> change_room;
+  Piece* change = change_room.items;
+  int n_change = detail::velocity_change(start.v, start.a, v_end, bounds, change);
+  if (n_change < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
+  const double change_end = detail::pieces_distance(start.v, start.a, change, n_change);
+  const double rest = distance - change_end;
+  // A target within rounding of where the direct change ends is that end (re-planning from a
+  // state sampled on the final change gives that change, as in the three-argument call).
+  const double dead_zone =
+      64.0 * DBL_EPSILON * std::max({std::abs(start.p), std::abs(target), std::abs(change_end)});
+  if (std::abs(rest) <= dead_zone) {
+    return finish_moving(start, target, v_end, 1.0, change, n_change, 0.0, nullptr, 0);
+  }
+
+  // Mirrored so that the target lies ahead (+) of E(0); positions relative to the start.
+  const double dir = rest > 0.0 ? 1.0 : -1.0;
+  const double goal = dir * distance;
+  const double ve = dir * v_end;
+  detail::PieceBuffer<detail::kMaxChangePieces> push_room;
+  Piece* push = push_room.items;
+  const int n_push =
+      detail::velocity_change(dir * start.v, dir * start.a, limits.velocity, bounds, push);
+  if (n_push < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
+
+  KinematicState s{0.0, dir * start.v, dir * start.a};
+  double e_here = dir * change_end;  // where the change to ve from s ends
+  for (int i = 0; i < n_push; ++i) {
+    const KinematicState next = detail::advance(s, push[i]);
+    const double e_next = next.p + change_distance(next.v, next.a, ve, bounds);
+    if (!(e_next < goal)) {
+      if (std::isnan(e_next)) return Profile::failure(ErrorCode::kPlannerNoSolution);
+      // The switch from push to change lies in this piece: E(tau) - goal changes sign on it.
+      const double jerk = push[i].j;
+      auto f = [&](double tau) {
+        const KinematicState x = detail::advance(s, jerk, tau);
+        const double d = change_distance(x.v, x.a, ve, bounds);
+        return x.p + d - goal;
+      };
+      double lo = 0.0, hi = push[i].t;
+      double r_lo = e_here - goal, r_hi = e_next - goal;  // the residuals at the bracket's ends
+      double w_lo = r_lo, w_hi = r_hi;                    // their Illinois weights
+      double tau = hi;
+      int side = 0;
+      for (int iter = 0; iter < 200; ++iter) {
+        if (hi - lo <= 4.0 * DBL_EPSILON * hi) {
+          tau = -r_lo <= r_hi ? lo : hi;  // the end with the smaller residual
+          break;
+        }
+        // Regula falsi with the Illinois weighting; a bisection every 8th step bounds the count.
+        double x = lo + (hi - lo) * (w_lo / (w_lo - w_hi));
+        if (!(x > lo && x < hi) || iter % 8 == 7) x = 0.5 * (lo + hi);
+        const double fx = f(x);
+        if (std::isnan(fx)) return Profile::failure(ErrorCode::kPlannerNoSolution);
+        tau = x;
+        if (std::abs(fx) <= kRootTolerance * (std::abs(goal) + std::abs(fx + goal))) break;
+        if (fx < 0.0) {
+          lo = x;
+          r_lo = w_lo = fx;
+          if (side == -1) w_hi *= 0.5;
+          side = -1;
+        } else {
+          hi = x;
+          r_hi = w_hi = fx;
+          if (side == 1) w_lo *= 0.5;
+          side = 1;
+        }
+      }
+      const KinematicState x = detail::advance(s, jerk, tau);
+      push[i] = Piece{tau, jerk, x.a, NAN};
+      n_change = detail::velocity_change(x.v, x.a, ve, bounds, change);
+      if (n_change < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
+      return finish_moving(start, target, v_end, dir, push, i + 1, 0.0, change, n_change);
+    }
+    s = next;
+    e_here = e_next;
+  }
+  // The push reaches V: cruise for the rest, then the change from (V, 0) to ve.
+  n_change = detail::velocity_change(limits.velocity, 0.0, ve, bounds, change);
+  if (n_change < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
+  const double s_end = s.p + detail::pieces_distance(limits.velocity, 0.0, change, n_change);
+  const double cruise = std::max((goal - s_end) / limits.velocity, 0.0);
+  return finish_moving(start, target, v_end, dir, push, n_push, cruise, change, n_change);
+}
+
+}  // namespace nc
