@@ -56,6 +56,46 @@ double change_distance(double v, double a, double v1, const Bounds& b) noexcept 
   return detail::pieces_distance(v, a, room.items, n);
 }
 
+// The switch leaves a residual E(tau) - goal at the rounding level of E, which can be far above
+// the rounding of the positions: a hold at a small A- after a small overshoot of a large v_end
+// lasts (v_curve - v) / A-, a difference of close absolute velocities, and every ulp of v moves
+// the end by v / A- ulp. The residual is taken out of the longest-travelling zero-jerk piece of
+// the change (its duration shifts by -residual / v, its end velocity by a · that, which is at the
+// level of v's own rounding), so that the profile is continuous in position at the switch.
+void absorb_residual(const KinematicState& x, double goal, Piece* change, int n) noexcept {
+  KinematicState s = x;
+  int best = -1;
+  double best_travel = 0.0;
+  double best_v = 0.0;
+  // Only pieces before the first v = 0 of the change: anchoring from the end moves the velocities
+  // of the pieces before the one shifted, and at v = 0 the bounds change (a shift of 1e-13 there
+  // is an acceleration above its bound for a moment).
+  bool crossed = false;
+  for (int k = 0; k < n && !crossed; ++k) {
+    const KinematicState e = detail::advance(s, change[k]);
+    crossed = e.v == 0.0 || (e.v < 0.0) != (s.v < 0.0);
+    if (change[k].j == 0.0 && !crossed) {
+      const double v_mid = s.v + 0.5 * s.a * change[k].t;
+      const double travel = std::abs(v_mid) * change[k].t;
+      if (travel > best_travel) {
+        best = k;
+        best_travel = travel;
+        best_v = v_mid;
+      }
+    }
+    s = e;
+  }
+  if (best < 0) return;
+  s = x;
+  for (int k = 0; k < n; ++k)
+    s = detail::advance(s, change[k]);
+  const double residual = s.p - goal;
+  const double dt = -residual / best_v;
+  const double t = change[best].t + dt;
+  // Only a shift within the velocity's rounding level (else the residual is left as it is).
+  if (t > 0.0 && std::abs(change[best].a_end * dt) <= 1e-12 * std::abs(best_v)) change[best].t = t;
+}
+
 }  // namespace
 
 Profile plan_position(const KinematicState& start, double target, double target_velocity,
@@ -147,6 +187,7 @@ Profile plan_position(const KinematicState& start, double target, double target_
       push[i] = Piece{tau, jerk, x.a, NAN};
       n_change = detail::velocity_change(x.v, x.a, ve, bounds, change);
       if (n_change < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
+      absorb_residual(x, goal, change, n_change);
       return finish_moving(start, target, v_end, dir, push, i + 1, 0.0, change, n_change);
     }
     s = next;
