@@ -62,7 +62,7 @@ double change_distance(double v, double a, double v1, const Bounds& b) noexcept 
 // the end by v / A- ulp. The residual is taken out of the longest-travelling zero-jerk piece of
 // the change (its duration shifts by -residual / v, its end velocity by a · that, which is at the
 // level of v's own rounding), so that the profile is continuous in position at the switch.
-void absorb_residual(const KinematicState& x, double goal, Piece* change, int n) noexcept {
+bool absorb_residual(const KinematicState& x, double goal, Piece* change, int n) noexcept {
   KinematicState s = x;
   int best = -1;
   double best_travel = 0.0;
@@ -85,7 +85,7 @@ void absorb_residual(const KinematicState& x, double goal, Piece* change, int n)
     }
     s = e;
   }
-  if (best < 0) return;
+  if (best < 0) return false;
   s = x;
   for (int k = 0; k < n; ++k)
     s = detail::advance(s, change[k]);
@@ -93,7 +93,9 @@ void absorb_residual(const KinematicState& x, double goal, Piece* change, int n)
   const double dt = -residual / best_v;
   const double t = change[best].t + dt;
   // Only a shift within the velocity's rounding level (else the residual is left as it is).
-  if (t > 0.0 && std::abs(change[best].a_end * dt) <= 1e-12 * std::abs(best_v)) change[best].t = t;
+  if (!(t > 0.0 && std::abs(change[best].a_end * dt) <= 1e-12 * std::abs(best_v))) return false;
+  change[best].t = t;
+  return true;
 }
 
 }  // namespace
@@ -123,10 +125,18 @@ Profile plan_position(const KinematicState& start, double target, double target_
   const double change_end = detail::pieces_distance(start.v, start.a, change, n_change);
   const double rest = distance - change_end;
   // A target within rounding of where the direct change ends is that end (re-planning from a
-  // state sampled on the final change gives that change, as in the three-argument call).
-  const double dead_zone =
-      64.0 * DBL_EPSILON * std::max({std::abs(start.p), std::abs(target), std::abs(change_end)});
+  // state sampled on the final change gives that change, as in the three-argument call). Unlike a
+  // stop, that end is only known to the rounding of a hold computed from close velocities (a few
+  // ulp of v^2 / A), and a target just on the wrong side of it needs a reversal: the dead zone
+  // covers that rounding too, capped at 1e-11 of the positions (the end check allows 1e-9).
+  const double v_max = std::max(std::abs(start.v), std::abs(v_end));
+  const double hold_scale = v_max * (v_max / std::min(limits.acceleration, limits.deceleration));
+  const double p_scale = std::max({1.0, std::abs(start.p), std::abs(target)});
+  const double dead_zone = std::max(
+      64.0 * DBL_EPSILON * std::max({std::abs(start.p), std::abs(target), std::abs(change_end)}),
+      std::min(64.0 * DBL_EPSILON * hold_scale, 1e-11 * p_scale));
   if (std::abs(rest) <= dead_zone) {
+    absorb_residual({0.0, start.v, start.a}, distance, change, n_change);
     return finish_moving(start, target, v_end, 1.0, change, n_change, 0.0, nullptr, 0);
   }
 
