@@ -138,7 +138,9 @@ Profile plan_position(const KinematicState& start, double target, const Limits& 
 // where the direct change to target_velocity ends gives a push the other way first (below the
 // end velocity, through v = 0 if needed: a run-up backwards). The final state is exactly
 // (target, target_velocity, 0); past duration() at(t) goes on at that velocity (holds_velocity()
-// is true when target_velocity != 0).
+// is true when target_velocity != 0). The optimal duration jumps where the direct change ends
+// (beyond it only a reversal reaches the target): a target within that point's rounding (up to
+// 1e-11 of the positions) is taken as it; re-plan a passing profile only when the target changes.
 Profile plan_position(const KinematicState& start, double target, double target_velocity,
                       const Limits& limits) noexcept;
 
