@@ -251,11 +251,8 @@ Summary passing_bellman(uint64_t seed) {
             return nc::plan_position(y, pr.target, v_end, pr.limits);
           },
           [&] {
-            char buf[64];
-            std::snprintf(buf, sizeof buf, " v_end=%.17g", v_end);
-            return profile_checks::describe_problem("plan_position", pr.start, pr.target,
-                                                    pr.limits) +
-                   buf;
+            return profile_checks::describe_passing_problem("plan_position", pr.start, pr.target,
+                                                            v_end, pr.limits);
           });
     }
   }

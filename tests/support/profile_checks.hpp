@@ -490,4 +490,12 @@ inline std::string describe_problem(const char* kind, const nc::KinematicState& 
   return buf;
 }
 
+// The same for a problem with an end velocity (plan_position's four-argument call).
+inline std::string describe_passing_problem(const char* kind, const nc::KinematicState& s,
+                                            double target, double v_end, const nc::Limits& l) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, " v_end=%.17g", v_end);
+  return describe_problem(kind, s, target, l) + buf;
+}
+
 }  // namespace profile_checks

@@ -16,6 +16,7 @@
 #include <cmath>
 
 #include "nc_core/profile.hpp"
+#include "profile/finish.hpp"
 #include "profile/profile_writer.hpp"
 #include "profile/validate.hpp"
 #include "profile/velocity_change.hpp"
@@ -28,24 +29,11 @@ using detail::Piece;
 
 constexpr double kRootTolerance = 1e-13;
 
-// Appends the push (mirrored by `dir`), a cruise, the change, and closes exactly on
-// (target, v_end, 0); everything after the push is anchored back from that end.
+// Closes on (target, v_end, 0), holding v_end past the end (profile/finish.hpp).
 Profile finish_moving(const KinematicState& start, double target, double v_end, double dir,
                       const Piece* head, int n_head, double cruise, const Piece* tail,
                       int n_tail) noexcept {
-  Profile profile;
-  detail::ProfileWriter writer(profile, start);
-  for (int i = 0; i < n_head; ++i)
-    writer.append(head[i], dir);
-  const std::size_t tail_start = writer.count();
-  writer.append(cruise, 0.0, NAN, NAN);
-  for (int i = 0; i < n_tail; ++i)
-    writer.append(tail[i], dir);
-  const KinematicState end{target, v_end, 0.0};
-  writer.close(&end, true);
-  profile.anchor_to_end(tail_start);
-  if (!detail::profile_finite(profile)) profile = Profile::failure(ErrorCode::kPlannerNoSolution);
-  return profile;
+  return detail::finish(start, target, v_end, dir, head, n_head, cruise, tail, n_tail, true);
 }
 
 // Distance of the time-optimal change (v, a) -> v1; NaN if the walk does not close.
