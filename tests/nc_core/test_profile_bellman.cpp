@@ -226,6 +226,49 @@ TEST_CASE(
   CHECK(sum.failures == 0);
 }
 
+namespace {
+
+// Bellman over random problems to (target, v_end, 0), v_end != 0 (issue 14), starts at p = 0.
+Summary passing_bellman(uint64_t seed) {
+  Rng rng(seed);
+  Summary sum;
+  for (long k = 0; k < kPositionProblems / 2; ++k) {
+    profile_problems::Problem pr = profile_problems::random_position_problem(rng, 0.3);
+    pr.target -= pr.start.p;
+    pr.start.p = 0.0;
+    const double v_end = profile_problems::random_end_velocity(rng, pr.limits);
+    const Profile prof = nc::plan_position(pr.start, pr.target, v_end, pr.limits);
+    ++sum.problems;
+    if (!prof.ok()) {
+      ++sum.failures;
+      continue;
+    }
+    if (!(prof.duration() > 0.0)) continue;
+    for (double t : replan_times(prof, rng)) {
+      compare(
+          sum, true, prof, pr.target, t, prof.at(t),
+          [&](const KinematicState& y) {
+            return nc::plan_position(y, pr.target, v_end, pr.limits);
+          },
+          [&] {
+            return profile_checks::describe_passing_problem("plan_position", pr.start, pr.target,
+                                                            v_end, pr.limits);
+          });
+    }
+  }
+  return sum;
+}
+
+}  // namespace
+
+TEST_CASE("re-planning a profile to a target passed at a velocity gives the rest of it",
+          "[profile][bellman]") {
+  const uint64_t seed = profile_problems::suite_seed(0xBE11B1E4ull);
+  const Summary sum = passing_bellman(seed);
+  sum.print("plan_position to a moving target state, Bellman", seed);
+  CHECK(sum.failures == 0);
+}
+
 TEST_CASE("re-planning a velocity profile from its state at any time gives the rest of it",
           "[profile][bellman]") {
   const uint64_t seed = profile_problems::suite_seed(0xBE11B5ull);

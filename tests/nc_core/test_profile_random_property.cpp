@@ -31,11 +31,13 @@ constexpr long kPositionProblems = 30'000;
 constexpr long kVelocityProblems = 6'000;
 constexpr long kStopProblems = 3'000;
 constexpr long kOutsideProblems = 3'000;
+constexpr long kPassingProblems = 20'000;
 #else
 constexpr long kPositionProblems = 1'000'000;
 constexpr long kVelocityProblems = 200'000;
 constexpr long kStopProblems = 100'000;
 constexpr long kOutsideProblems = 200'000;
+constexpr long kPassingProblems = 300'000;
 #endif
 
 constexpr int kPrintedFailures = 8;
@@ -109,6 +111,30 @@ TEST_CASE("a million random position problems end exactly at rest and never exce
   CHECK(tally.failures() == 0);
 }
 
+TEST_CASE("random position problems with an end velocity end exactly on it within the limits",
+          "[profile][random]") {
+  const uint64_t seed = profile_problems::suite_seed(0xB1E4DEDull);
+  Rng rng(seed);
+  Tally tally("plan_position to a moving target state");
+  Extremes worst;
+  for (long k = 0; k < kPassingProblems; ++k) {
+    const profile_problems::Problem pr = profile_problems::random_position_problem(rng, 0.3);
+    const double v_end = profile_problems::random_end_velocity(rng, pr.limits);
+    const nc::Profile prof = nc::plan_position(pr.start, pr.target, v_end, pr.limits);
+    Extremes e;
+    const Finding f = profile_checks::check_passing_profile(prof, pr.start, pr.target, v_end,
+                                                            pr.limits, {}, {}, &e);
+    worst.merge(e);
+    tally.record(f, f.ok() || !tally.needs_example()
+                        ? std::string()
+                        : profile_checks::describe_passing_problem("plan_position", pr.start,
+                                                                   pr.target, v_end, pr.limits));
+  }
+  tally.print(seed, worst);
+  CHECK(tally.problems() == kPassingProblems);
+  CHECK(tally.failures() == 0);
+}
+
 namespace {
 
 // A start outside the limits (SPEC B2): above V with a not pushing |v| further up, or |a| above
@@ -174,6 +200,35 @@ TEST_CASE("random starts outside the limits come back inside as the limits allow
     tally.record(f, f.ok() || !tally.needs_example()
                         ? std::string()
                         : profile_checks::describe_problem("plan_position", start, target, l));
+  }
+  tally.print(seed, worst);
+  CHECK(tally.failures() == 0);
+}
+
+TEST_CASE("random starts outside the limits reach a target at an end velocity exactly",
+          "[profile][random]") {
+  const uint64_t seed = profile_problems::suite_seed(0x0B1E0075ull);
+  Rng rng(seed);
+  Tally tally("plan_position to a moving target state, start outside the limits");
+  Extremes worst;
+  long k = 0;
+  while (k < kOutsideProblems / 2) {
+    const nc::Limits l = profile_problems::random_limits(rng);
+    nc::KinematicState start{profile_problems::random_position(rng), 0.0, 0.0};
+    profile_checks::StartRelief relief;
+    if (!random_outside_state(rng, l, start, relief)) continue;
+    ++k;
+    const double target = start.p + profile_problems::random_distance(rng);
+    const double v_end = profile_problems::random_end_velocity(rng, l);
+    const nc::Profile prof = nc::plan_position(start, target, v_end, l);
+    Extremes e;
+    const Finding f =
+        profile_checks::check_passing_profile(prof, start, target, v_end, l, {}, relief, &e);
+    worst.merge(e);
+    tally.record(f, f.ok() || !tally.needs_example()
+                        ? std::string()
+                        : profile_checks::describe_passing_problem("plan_position", start, target,
+                                                                   v_end, l));
   }
   tally.print(seed, worst);
   CHECK(tally.failures() == 0);

@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -96,16 +97,57 @@ TEST_CASE("the reference's phases are a valid motion that ends at rest at the ta
   CHECK(bad == 0);
 }
 
-TEST_CASE("rest-to-rest durations equal the reference's: never longer, never shorter",
-          "[profile][reference]") {
-  const uint64_t seed = profile_problems::suite_seed(0x4EF4E5ull);
-  Rng rng(seed);
+namespace {
+
+// Planner durations against the reference's: counts, worst deviations, the first examples.
+struct DurationTally {
+  long compared = 0;
   long longer = 0;
   long shorter = 0;
   long not_ok = 0;
   double worst_longer = 0.0;
   double worst_shorter = 0.0;
   std::vector<std::string> examples;
+
+  // `slack`: relative tolerance beyond kRelative; `problem` describes the problem for a failure.
+  template <class Describe>
+  void add(const nc::Profile& prof, double ref, double slack, Describe problem) {
+    ++compared;
+    if (!prof.ok()) {
+      ++not_ok;
+      return;
+    }
+    const double rel = (prof.duration() - ref) / ref;
+    worst_longer = std::max(worst_longer, rel);
+    worst_shorter = std::max(worst_shorter, -rel);
+    if (std::fabs(rel) <= kRelative + slack) return;
+    (rel > 0.0 ? longer : shorter)++;
+    if (examples.size() < 8) {
+      char buf[128];
+      std::snprintf(buf, sizeof buf, "\n    -> planner %.17g s, reference %.17g s", prof.duration(),
+                    ref);
+      examples.push_back(problem() + buf);
+    }
+  }
+  void print(const char* name, uint64_t seed) const {
+    std::printf(
+        "[%s] seed 0x%016llx: %ld problems, %ld longer, %ld shorter than the reference "
+        "(tolerance %.0e), %ld not ok; worst: %.3g longer, %.3g shorter (relative)\n",
+        name, static_cast<unsigned long long>(seed), compared, longer, shorter, kRelative, not_ok,
+        worst_longer, worst_shorter);
+    for (const std::string& s : examples)
+      std::printf("  %s\n", s.c_str());
+    std::fflush(stdout);
+  }
+};
+
+}  // namespace
+
+TEST_CASE("rest-to-rest durations equal the reference's: never longer, never shorter",
+          "[profile][reference]") {
+  const uint64_t seed = profile_problems::suite_seed(0x4EF4E5ull);
+  Rng rng(seed);
+  DurationTally tally;
   for (long k = 0; k < kProblems; ++k) {
     const Limits l = profile_problems::random_limits(rng);
     const double p0 = profile_problems::random_position(rng);
@@ -113,32 +155,50 @@ TEST_CASE("rest-to-rest durations equal the reference's: never longer, never sho
     const nc::Profile prof = nc::plan_position({p0, 0.0, 0.0}, target, l);
     // The reference is given the distance the planner really has to cover (target - p0 rounds).
     const double ref = reference::rest_to_rest(target - p0, l).duration;
-    if (!prof.ok()) {
-      ++not_ok;
-      continue;
-    }
-    const double rel = (prof.duration() - ref) / ref;
-    worst_longer = std::max(worst_longer, rel);
-    worst_shorter = std::max(worst_shorter, -rel);
-    if (std::fabs(rel) <= kRelative) continue;
-    (rel > 0.0 ? longer : shorter)++;
-    if (examples.size() < 8) {
-      char buf[128];
-      std::snprintf(buf, sizeof buf, "\n    -> planner %.17g s, reference %.17g s", prof.duration(),
-                    ref);
-      examples.push_back(
-          profile_checks::describe_problem("rest-to-rest", {p0, 0.0, 0.0}, target, l) + buf);
-    }
+    tally.add(prof, ref, 0.0, [&] {
+      return profile_checks::describe_problem("rest-to-rest", {p0, 0.0, 0.0}, target, l);
+    });
   }
-  std::printf(
-      "[reference] seed 0x%016llx: %ld rest-to-rest problems, %ld longer, %ld shorter than the "
-      "reference (tolerance %.0e), %ld not ok; worst: %.3g longer, %.3g shorter (relative)\n",
-      static_cast<unsigned long long>(seed), kProblems, longer, shorter, kRelative, not_ok,
-      worst_longer, worst_shorter);
-  for (const std::string& s : examples)
-    std::printf("  %s\n", s.c_str());
-  std::fflush(stdout);
-  CHECK(not_ok == 0);
-  CHECK(longer == 0);
-  CHECK(shorter == 0);
+  tally.print("reference, rest to rest", seed);
+  CHECK(tally.compared == kProblems);
+  CHECK(tally.not_ok == 0);
+  CHECK(tally.longer == 0);
+  CHECK(tally.shorter == 0);
+}
+
+TEST_CASE("durations to a target passed at a velocity equal the reference's (no reversal)",
+          "[profile][reference]") {
+  // Issue 14: from (v0, 0) to (target, v_end, 0), same direction, through one velocity peak or
+  // trough (reference::through_extreme); problems that need a reversal are drawn again.
+  const uint64_t seed = profile_problems::suite_seed(0x4EFB1E4Dull);
+  Rng rng(seed);
+  DurationTally tally;
+  while (tally.compared < kProblems / 3) {
+    const Limits l = profile_problems::random_limits(rng);
+    const double dir = rng.sign();
+    const double v0 = rng.chance(0.3) ? 0.0 : l.velocity * rng.uniform();
+    const double v_end = rng.chance(0.2) ? l.velocity : l.velocity * rng.uniform(1e-6, 1.0);
+    const double p0 = profile_problems::random_position(rng);
+    const double target = p0 + dir * rng.log_uniform(1e-6, 1e5);
+    const double ref = reference::through_extreme(v0, v_end, dir * (target - p0), l);
+    if (std::isnan(ref)) continue;
+    const nc::Profile prof = nc::plan_position({p0, dir * v0, 0.0}, target, dir * v_end, l);
+    // Arriving within the end-position tolerance of the target at v_end is arriving: the
+    // durations may also differ by the time that tolerance takes at v_end (a passing motion's
+    // duration is only as exact as its end position, unlike one that ends at rest), and by what a
+    // few ulp of the velocities move a hold at the smaller acceleration bound (both sides compute
+    // such a hold from a difference of close velocities: 1e-12 s at 12000 mm/s and A- 0.7).
+    const double slack =
+        (profile_checks::end_position_tolerance({p0, 0.0, 0.0}, target) / v_end +
+         4.0 * DBL_EPSILON * std::max(v0, v_end) / std::min(l.acceleration, l.deceleration)) /
+        ref;
+    tally.add(prof, ref, slack, [&] {
+      return profile_checks::describe_passing_problem("passing", {p0, dir * v0, 0.0}, target,
+                                                      dir * v_end, l);
+    });
+  }
+  tally.print("reference, end velocity", seed);
+  CHECK(tally.not_ok == 0);
+  CHECK(tally.longer == 0);
+  CHECK(tally.shorter == 0);
 }

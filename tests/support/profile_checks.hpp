@@ -412,7 +412,8 @@ inline Finding check_at(const nc::Profile& prof, const Scales& sc, const Toleran
   };
   if (!same(prof.at(-1.0), prof.start_state())) return {Check::kAt, 0, -1.0, prof.at(-1.0).p, 0.0};
   if (!same(prof.at(T), prof.final_state())) return {Check::kAt, n, T, prof.at(T).p, 0.0};
-  if (!same(prof.at(T + 1.0 + T), prof.final_state()))
+  // Past the end: the final state, or for a profile that holds its end velocity the motion at it.
+  if (!prof.holds_velocity() && !same(prof.at(T + 1.0 + T), prof.final_state()))
     return {Check::kAt, n, 2.0 * T + 1.0, prof.at(2.0 * T + 1.0).p, 0.0};
   double p_scale = sc.p;
   for (std::size_t i = 0; i < n; ++i)
@@ -444,17 +445,25 @@ inline Finding check_at(const nc::Profile& prof, const Scales& sc, const Toleran
   return {};
 }
 
-// All checks of a position profile that is expected to stay inside the limits.
-inline Finding check_position_profile(const nc::Profile& prof, const nc::KinematicState& start,
-                                      double target, const nc::Limits& l, const Tolerance& tol = {},
-                                      const StartRelief& relief = {}, Extremes* ext = nullptr) {
+// All checks of a profile to (target, v_end, 0) that is expected to stay inside the limits.
+inline Finding check_passing_profile(const nc::Profile& prof, const nc::KinematicState& start,
+                                     double target, double v_end, const nc::Limits& l,
+                                     const Tolerance& tol = {}, const StartRelief& relief = {},
+                                     Extremes* ext = nullptr) {
   const Scales sc = scales_for(start, target, l);
   Finding f = check_structure(prof, start, tol);
   if (f.ok()) f = check_continuity(prof, sc, tol, ext);
-  if (f.ok()) f = check_end(prof, start, target, 0.0, sc, tol, ext);
+  if (f.ok()) f = check_end(prof, start, target, v_end, sc, tol, ext);
   if (f.ok()) f = check_limits(prof, l, tol, relief, ext);
   if (f.ok()) f = check_at(prof, sc, tol);
   return f;
+}
+
+// All checks of a position profile (to rest) that is expected to stay inside the limits.
+inline Finding check_position_profile(const nc::Profile& prof, const nc::KinematicState& start,
+                                      double target, const nc::Limits& l, const Tolerance& tol = {},
+                                      const StartRelief& relief = {}, Extremes* ext = nullptr) {
+  return check_passing_profile(prof, start, target, 0.0, l, tol, relief, ext);
 }
 
 // All checks of a velocity profile (plan_velocity) that is expected to stay inside the limits.
@@ -479,6 +488,14 @@ inline std::string describe_problem(const char* kind, const nc::KinematicState& 
                 "A-=%.17g, J=%.17g}",
                 kind, s.p, s.v, s.a, target, l.velocity, l.acceleration, l.deceleration, l.jerk);
   return buf;
+}
+
+// The same for a problem with an end velocity (plan_position's four-argument call).
+inline std::string describe_passing_problem(const char* kind, const nc::KinematicState& s,
+                                            double target, double v_end, const nc::Limits& l) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, " v_end=%.17g", v_end);
+  return describe_problem(kind, s, target, l) + buf;
 }
 
 }  // namespace profile_checks

@@ -129,4 +129,13 @@ inline Problem random_position_problem(Rng& rng, double rest_share) {
   return pr;
 }
 
+// An end velocity for plan_position's four-argument call: either sign, never 0, ±V included.
+inline double random_end_velocity(Rng& rng, const nc::Limits& l) {
+  const double u = rng.uniform();
+  if (u < 0.15) return rng.sign() * l.velocity;
+  if (u < 0.3) return rng.sign() * l.velocity * rng.log_uniform(1e-6, 1.0);
+  const double v = rng.uniform(-l.velocity, l.velocity);
+  return v != 0.0 ? v : l.velocity;
+}
+
 }  // namespace profile_problems

@@ -83,6 +83,53 @@ inline std::array<Piece, 7> rest_to_rest_pieces(double distance, const nc::Limit
           Piece{down[0], sign * J}};
 }
 
+// From (v0, 0) to (distance, v_end, 0) with v0, v_end >= 0, through one velocity extreme vp with
+// a = 0 there and v >= 0 throughout: a peak vp >= max(v0, v_end) (|v| grows to it under A+,
+// shrinks after it under A-, held if vp = V) or a trough 0 <= vp <= min(v0, v_end) (A- down, A+
+// up). Each ramp is elementary and symmetric, so it covers its mean velocity times its time; the
+// distance grows with vp, so bisection on vp (200 halvings) finds it. Returns NaN when the target
+// needs v < 0 on the way (not covered by this reference).
+inline double through_extreme(double v0, double v_end, double distance, const nc::Limits& l) {
+  const double J = l.jerk;
+  auto leg = [&](double va, double vb, bool grows, double& time) {
+    time = ramp_time(std::fabs(vb - va), grows ? l.acceleration : l.deceleration, J);
+    return 0.5 * (va + vb) * time;
+  };
+  // Distance and duration through the extreme vp (peak when vp >= both ends).
+  auto through = [&](double vp, double& time) {
+    double t1 = 0.0;
+    double t2 = 0.0;
+    const bool peak = vp >= std::max(v0, v_end);
+    const double d = leg(v0, vp, peak, t1) + leg(vp, v_end, !peak, t2);
+    time = t1 + t2;
+    return d;
+  };
+  double time = 0.0;
+  const double direct = through(std::max(v0, v_end), time);
+  double lo;
+  double hi;
+  if (distance >= direct) {
+    const double at_v = through(l.velocity, time);
+    if (at_v <= distance) return time + (distance - at_v) / l.velocity;
+    lo = std::max(v0, v_end);
+    hi = l.velocity;
+  } else {
+    if (through(0.0, time) > distance) return NAN;
+    lo = 0.0;
+    hi = std::min(v0, v_end);
+  }
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    if (through(mid, time) < distance) {
+      lo = mid;
+    } else {
+      hi = mid;
+    }
+  }
+  through(0.5 * (lo + hi), time);
+  return time;
+}
+
 // The elementary shortest stop from (v, 0) with deceleration A and jerk J: a ramp through |v|.
 inline double stop_time_from_constant_velocity(double v, double deceleration, double jerk) {
   return ramp_time(std::fabs(v), deceleration, jerk);

@@ -1,8 +1,9 @@
 // Planner speed over fixed random problem sets (issue 3): rest to rest, any feasible state to
-// rest, and velocity changes, with distances 1e-6…1e5 mm, V 1e-2…1e5 mm/s, A 1e-1…1e7 mm/s²,
-// J 1…1e9 mm/s³ (log-uniform). Besides Google Benchmark's mean time per plan, each benchmark
-// reports the median and the 99th percentile over the set (counters median_ns, p99_ns): every
-// problem is timed alone, as the mean of a few repeated plans.
+// rest, any feasible state to a target passed at a velocity (issue 14), and velocity changes, with
+// distances 1e-6…1e5 mm, V 1e-2…1e5 mm/s, A 1e-1…1e7 mm/s², J 1…1e9 mm/s³ (log-uniform). Besides
+// Google Benchmark's mean time per plan, each benchmark reports the median and the 99th percentile
+// over the set (counters median_ns, p99_ns): every problem is timed alone, as the mean of a few
+// repeated plans.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -23,6 +24,7 @@ struct Problem {
   nc::KinematicState start;
   double target = 0.0;  // position, or velocity for the velocity set
   nc::Limits limits;
+  double end_velocity = 0.0;  // the passing set's v_end (never 0 there)
 };
 
 class Draw {
@@ -82,6 +84,22 @@ const std::vector<Problem>& state_set() {
   return set;
 }
 
+const std::vector<Problem>& passing_set() {
+  static const std::vector<Problem> set = [] {
+    Draw draw(kSeed + 3);
+    std::vector<Problem> v(kSetSize);
+    for (Problem& q : v) {
+      q.limits = draw.limits();
+      q.start = draw.moving_state(q.limits);
+      q.target = draw.distance();
+      const double u = draw.uniform(-1.0, 1.0);
+      q.end_velocity = (u != 0.0 ? u : 1.0) * q.limits.velocity;
+    }
+    return v;
+  }();
+  return set;
+}
+
 const std::vector<Problem>& velocity_set() {
   static const std::vector<Problem> set = [] {
     Draw draw(kSeed + 2);
@@ -98,6 +116,9 @@ const std::vector<Problem>& velocity_set() {
 
 nc::Profile plan_position(const Problem& q) {
   return nc::plan_position(q.start, q.target, q.limits);
+}
+nc::Profile plan_passing(const Problem& q) {
+  return nc::plan_position(q.start, q.target, q.end_velocity, q.limits);
 }
 nc::Profile plan_velocity(const Problem& q) {
   return nc::plan_velocity(q.start, q.target, q.limits);
@@ -142,6 +163,9 @@ void BM_PlanPositionRestToRest(benchmark::State& state) {
 void BM_PlanPositionFromAnyState(benchmark::State& state) {
   run(state, state_set(), plan_position);
 }
+void BM_PlanPositionPassingAtVelocity(benchmark::State& state) {
+  run(state, passing_set(), plan_passing);
+}
 void BM_PlanVelocity(benchmark::State& state) {
   run(state, velocity_set(), plan_velocity);
 }
@@ -150,5 +174,6 @@ void BM_PlanVelocity(benchmark::State& state) {
 
 BENCHMARK(BM_PlanPositionRestToRest);
 BENCHMARK(BM_PlanPositionFromAnyState);
+BENCHMARK(BM_PlanPositionPassingAtVelocity);
 BENCHMARK(BM_PlanVelocity);
 BENCHMARK_MAIN();

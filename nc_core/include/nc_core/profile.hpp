@@ -132,6 +132,18 @@ class Profile {
 // re-planning from a state sampled on a final ramp must not turn rounding into extra motion.
 Profile plan_position(const KinematicState& start, double target, const Limits& limits) noexcept;
 
+// The same to (target, target_velocity, 0), target_velocity signed (issue 14: a target passed at
+// a velocity; 0 is the call above, bit for bit). |target_velocity| > V gives kVelocityNotAllowed,
+// a non-finite one kParameterNotFinite. Every end state is reached: a target behind the point
+// where the direct change to target_velocity ends gives a push the other way first (below the
+// end velocity, through v = 0 if needed: a run-up backwards). The final state is exactly
+// (target, target_velocity, 0); past duration() at(t) goes on at that velocity (holds_velocity()
+// is true when target_velocity != 0). The optimal duration jumps where the direct change ends
+// (beyond it only a reversal reaches the target): a target within that point's rounding (up to
+// 1e-11 of the positions) is taken as it; re-plan a passing profile only when the target changes.
+Profile plan_position(const KinematicState& start, double target, double target_velocity,
+                      const Limits& limits) noexcept;
+
 // From any state to the constant velocity `velocity` (either sign, |velocity| <= V, otherwise
 // kVelocityNotAllowed), then hold it. A lower level is reached from above without undershoot.
 // duration() is the time until the velocity is reached; past it at(t) extrapolates at the held

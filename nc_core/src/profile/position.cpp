@@ -19,6 +19,7 @@
 #include <cmath>
 
 #include "nc_core/profile.hpp"
+#include "profile/finish.hpp"
 #include "profile/profile_writer.hpp"
 #include "profile/rest_to_rest.hpp"
 #include "profile/root.hpp"
@@ -37,23 +38,10 @@ using detail::Piece;
 // checks allow 1e-9); solving much tighter costs iterations without changing the profile.
 constexpr double kRootTolerance = 1e-13;
 
-// Appends pieces (mirrored back by `dir`), closes at rest on the target.
+// Closes at rest on the target (profile/finish.hpp).
 Profile finish(const KinematicState& start, double target, double dir, const Piece* head,
                int n_head, double cruise, const Piece* tail, int n_tail) noexcept {
-  Profile profile;
-  detail::ProfileWriter writer(profile, start);
-  for (int i = 0; i < n_head; ++i)
-    writer.append(head[i], dir);
-  const std::size_t tail_start = writer.count();
-  writer.append(cruise, 0.0, NAN, NAN);
-  for (int i = 0; i < n_tail; ++i)
-    writer.append(tail[i], dir);
-  const KinematicState end{target, 0.0, 0.0};
-  writer.close(&end, false);
-  profile.anchor_to_end(tail_start);
-  // One returned object (no copy of the profile on return).
-  if (!detail::profile_finite(profile)) profile = Profile::failure(ErrorCode::kPlannerNoSolution);
-  return profile;
+  return detail::finish(start, target, 0.0, dir, head, n_head, cruise, tail, n_tail, false);
 }
 
 }  // namespace

@@ -1,0 +1,35 @@
+// The last step of plan_position (both calls): the profile from its pieces (internal).
+#pragma once
+
+#include <cmath>
+
+#include "nc_core/profile.hpp"
+#include "profile/kinematics.hpp"
+#include "profile/profile_writer.hpp"
+#include "profile/validate.hpp"
+
+namespace nc::detail {
+
+// Appends the head pieces (mirrored back by `dir`), a cruise and the tail pieces, and closes
+// exactly on (target, v_end, 0), holding v_end past the end when `holds`. Everything after the
+// head is anchored back from that exact end, so both ends are exact relative to their own values.
+inline Profile finish(const KinematicState& start, double target, double v_end, double dir,
+                      const Piece* head, int n_head, double cruise, const Piece* tail, int n_tail,
+                      bool holds) noexcept {
+  Profile profile;
+  ProfileWriter writer(profile, start);
+  for (int i = 0; i < n_head; ++i)
+    writer.append(head[i], dir);
+  const std::size_t tail_start = writer.count();
+  writer.append(cruise, 0.0, NAN, NAN);
+  for (int i = 0; i < n_tail; ++i)
+    writer.append(tail[i], dir);
+  const KinematicState end{target, v_end, 0.0};
+  writer.close(&end, holds);
+  profile.anchor_to_end(tail_start);
+  // One returned object (no copy of the profile on return).
+  if (!profile_finite(profile)) profile = Profile::failure(ErrorCode::kPlannerNoSolution);
+  return profile;
+}
+
+}  // namespace nc::detail

@@ -1,0 +1,202 @@
+// plan_position with an end velocity: time-optimal motion from any state to (target, v_end, 0).
+//
+// The same construction as the stop at a target (position.cpp), with the stop replaced by the
+// time-optimal velocity change to v_end: push = the velocity change towards ±V (then cruise at
+// ±V) for a time tau, then the change to v_end from the state reached. The point E(tau) where
+// that change ends moves towards the push direction, from E(0) (the change straight from the
+// start) to infinity; so the direction is the side of the target relative to E(0), and tau is
+// the root of E(tau) = target. A target behind E(0) gives a push the other way: the velocity goes
+// below v_end (through v = 0 where needed: a run-up backwards) and the change brings it back.
+// The change to v_end has no closed-form distance here (it may cross v = 0, where the bounds
+// change), so tau is found by a bracketed regula falsi (Illinois) on the pieces' own integrated
+// distance, first bracketed between the push's piece boundaries. v_end = 0 is plan_position's
+// three-argument call itself (bit for bit).
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+
+#include "nc_core/profile.hpp"
+#include "profile/finish.hpp"
+#include "profile/profile_writer.hpp"
+#include "profile/validate.hpp"
+#include "profile/velocity_change.hpp"
+
+namespace nc {
+namespace {
+
+using detail::Bounds;
+using detail::Piece;
+
+constexpr double kRootTolerance = 1e-13;
+
+// Closes on (target, v_end, 0), holding v_end past the end (profile/finish.hpp).
+Profile finish_moving(const KinematicState& start, double target, double v_end, double dir,
+                      const Piece* head, int n_head, double cruise, const Piece* tail,
+                      int n_tail) noexcept {
+  return detail::finish(start, target, v_end, dir, head, n_head, cruise, tail, n_tail, true);
+}
+
+// Distance of the time-optimal change (v, a) -> v1; NaN if the walk does not close.
+double change_distance(double v, double a, double v1, const Bounds& b) noexcept {
+  detail::PieceBuffer<detail::kMaxChangePieces> room;
+  const int n = detail::velocity_change(v, a, v1, b, room.items);
+  if (n < 0) return NAN;
+  return detail::pieces_distance(v, a, room.items, n);
+}
+
+// The switch leaves a residual E(tau) - goal at the rounding level of E, which can be far above
+// the rounding of the positions: a hold at a small A- after a small overshoot of a large v_end
+// lasts (v_curve - v) / A-, a difference of close absolute velocities, and every ulp of v moves
+// the end by v / A- ulp. The residual is taken out of the longest-travelling zero-jerk piece of
+// the change (its duration shifts by -residual / v, its end velocity by a · that, which is at the
+// level of v's own rounding), so that the profile is continuous in position at the switch.
+bool absorb_residual(const KinematicState& x, double goal, Piece* change, int n) noexcept {
+  KinematicState s = x;
+  int best = -1;
+  double best_travel = 0.0;
+  double best_v = 0.0;
+  // Only pieces before the first v = 0 of the change: anchoring from the end moves the velocities
+  // of the pieces before the one shifted, and at v = 0 the bounds change (a shift of 1e-13 there
+  // is an acceleration above its bound for a moment).
+  bool crossed = false;
+  for (int k = 0; k < n && !crossed; ++k) {
+    const KinematicState e = detail::advance(s, change[k]);
+    crossed = e.v == 0.0 || (e.v < 0.0) != (s.v < 0.0);
+    if (change[k].j == 0.0 && !crossed) {
+      const double v_mid = s.v + 0.5 * s.a * change[k].t;
+      const double travel = std::abs(v_mid) * change[k].t;
+      if (travel > best_travel) {
+        best = k;
+        best_travel = travel;
+        best_v = v_mid;
+      }
+    }
+    s = e;
+  }
+  if (best < 0) return false;
+  s = x;
+  for (int k = 0; k < n; ++k)
+    s = detail::advance(s, change[k]);
+  const double residual = s.p - goal;
+  const double dt = -residual / best_v;
+  const double t = change[best].t + dt;
+  // Only a shift within the velocity's rounding level (else the residual is left as it is).
+  if (!(t > 0.0 && std::abs(change[best].a_end * dt) <= 1e-12 * std::abs(best_v))) return false;
+  change[best].t = t;
+  return true;
+}
+
+}  // namespace
+
+Profile plan_position(const KinematicState& start, double target, double target_velocity,
+                      const Limits& limits) noexcept {
+  ErrorCode e = detail::check_state(start);
+  if (e == ErrorCode::kNone && !std::isfinite(target)) e = ErrorCode::kPositionNotFinite;
+  if (e == ErrorCode::kNone) e = detail::check_limits(limits);
+  if (e == ErrorCode::kNone && !std::isfinite(target_velocity)) {
+    e = ErrorCode::kParameterNotFinite;
+  }
+  if (e == ErrorCode::kNone && std::abs(target_velocity) > limits.velocity) {
+    e = ErrorCode::kVelocityNotAllowed;
+  }
+  if (e != ErrorCode::kNone) return Profile::failure(e);
+  if (target_velocity == 0.0) return plan_position(start, target, limits);
+
+  const Bounds bounds{limits.acceleration, limits.deceleration, limits.jerk};
+  const double distance = target - start.p;
+  const double v_end = target_velocity;
+
+  detail::PieceBuffer<detail::kMaxChangePieces> change_room;
+  Piece* change = change_room.items;
+  int n_change = detail::velocity_change(start.v, start.a, v_end, bounds, change);
+  if (n_change < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
+  const double change_end = detail::pieces_distance(start.v, start.a, change, n_change);
+  const double rest = distance - change_end;
+  // A target within rounding of where the direct change ends is that end (re-planning from a
+  // state sampled on the final change gives that change, as in the three-argument call). Unlike a
+  // stop, that end is only known to the rounding of a hold computed from close velocities (a few
+  // ulp of v^2 / A), and a target just on the wrong side of it needs a reversal: the dead zone
+  // covers that rounding too, capped at 1e-11 of the positions (the end check allows 1e-9).
+  const double v_max = std::max(std::abs(start.v), std::abs(v_end));
+  const double hold_scale = v_max * (v_max / std::min(limits.acceleration, limits.deceleration));
+  const double p_scale = std::max({1.0, std::abs(start.p), std::abs(target)});
+  const double dead_zone = std::max(
+      64.0 * DBL_EPSILON * std::max({std::abs(start.p), std::abs(target), std::abs(change_end)}),
+      std::min(64.0 * DBL_EPSILON * hold_scale, 1e-11 * p_scale));
+  if (std::abs(rest) <= dead_zone) {
+    absorb_residual({0.0, start.v, start.a}, distance, change, n_change);
+    return finish_moving(start, target, v_end, 1.0, change, n_change, 0.0, nullptr, 0);
+  }
+
+  // Mirrored so that the target lies ahead (+) of E(0); positions relative to the start.
+  const double dir = rest > 0.0 ? 1.0 : -1.0;
+  const double goal = dir * distance;
+  const double ve = dir * v_end;
+  detail::PieceBuffer<detail::kMaxChangePieces> push_room;
+  Piece* push = push_room.items;
+  const int n_push =
+      detail::velocity_change(dir * start.v, dir * start.a, limits.velocity, bounds, push);
+  if (n_push < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
+
+  KinematicState s{0.0, dir * start.v, dir * start.a};
+  double e_here = dir * change_end;  // where the change to ve from s ends
+  for (int i = 0; i < n_push; ++i) {
+    const KinematicState next = detail::advance(s, push[i]);
+    const double e_next = next.p + change_distance(next.v, next.a, ve, bounds);
+    if (!(e_next < goal)) {
+      if (std::isnan(e_next)) return Profile::failure(ErrorCode::kPlannerNoSolution);
+      // The switch from push to change lies in this piece: E(tau) - goal changes sign on it.
+      const double jerk = push[i].j;
+      auto f = [&](double tau) {
+        const KinematicState x = detail::advance(s, jerk, tau);
+        const double d = change_distance(x.v, x.a, ve, bounds);
+        return x.p + d - goal;
+      };
+      double lo = 0.0, hi = push[i].t;
+      double r_lo = e_here - goal, r_hi = e_next - goal;  // the residuals at the bracket's ends
+      double w_lo = r_lo, w_hi = r_hi;                    // their Illinois weights
+      double tau = hi;
+      int side = 0;
+      for (int iter = 0; iter < 200; ++iter) {
+        if (hi - lo <= 4.0 * DBL_EPSILON * hi) {
+          tau = -r_lo <= r_hi ? lo : hi;  // the end with the smaller residual
+          break;
+        }
+        // Regula falsi with the Illinois weighting; a bisection every 8th step bounds the count.
+        double x = lo + (hi - lo) * (w_lo / (w_lo - w_hi));
+        if (!(x > lo && x < hi) || iter % 8 == 7) x = 0.5 * (lo + hi);
+        const double fx = f(x);
+        if (std::isnan(fx)) return Profile::failure(ErrorCode::kPlannerNoSolution);
+        tau = x;
+        if (std::abs(fx) <= kRootTolerance * (std::abs(goal) + std::abs(fx + goal))) break;
+        if (fx < 0.0) {
+          lo = x;
+          r_lo = w_lo = fx;
+          if (side == -1) w_hi *= 0.5;
+          side = -1;
+        } else {
+          hi = x;
+          r_hi = w_hi = fx;
+          if (side == 1) w_lo *= 0.5;
+          side = 1;
+        }
+      }
+      const KinematicState x = detail::advance(s, jerk, tau);
+      push[i] = Piece{tau, jerk, x.a, NAN};
+      n_change = detail::velocity_change(x.v, x.a, ve, bounds, change);
+      if (n_change < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
+      absorb_residual(x, goal, change, n_change);
+      return finish_moving(start, target, v_end, dir, push, i + 1, 0.0, change, n_change);
+    }
+    s = next;
+    e_here = e_next;
+  }
+  // The push reaches V: cruise for the rest, then the change from (V, 0) to ve.
+  n_change = detail::velocity_change(limits.velocity, 0.0, ve, bounds, change);
+  if (n_change < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
+  const double s_end = s.p + detail::pieces_distance(limits.velocity, 0.0, change, n_change);
+  const double cruise = std::max((goal - s_end) / limits.velocity, 0.0);
+  return finish_moving(start, target, v_end, dir, push, n_push, cruise, change, n_change);
+}
+
+}  // namespace nc
