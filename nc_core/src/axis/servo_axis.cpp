@@ -87,6 +87,7 @@ void ServoAxis::generate_set_values() noexcept {
     return;
   }
   bool not_finite = false;
+  bool too_large = false;
   bool absolute_ended = false;
   switch (source()) {
     case SetValueSource::kPtpJob:
@@ -99,6 +100,7 @@ void ServoAxis::generate_set_values() noexcept {
       base_ = step.state;
       set_jerk_ = 0.0;
       not_finite = step.not_finite;
+      too_large = step.too_large;
       absolute_ended = step.finished;
       break;
     }
@@ -128,6 +130,8 @@ void ServoAxis::generate_set_values() noexcept {
   }
   // A packet with NaN or inf is not taken; the axis must not run on it (SPEC B8).
   if (not_finite || r.not_finite) raise_error(ErrorCode::kParameterNotFinite);
+  // A finite packet out of range (external_setpoint.hpp) is not taken either: 0x4359.
+  if (too_large || r.too_large) raise_error(ErrorCode::kSetVelocityNotAllowed);
 }
 
 SetValueSource ServoAxis::source() const noexcept {
