@@ -90,6 +90,42 @@ TEST_CASE("bad compensation start parameters are refused with their codes",
   }
 }
 
+TEST_CASE("compensation parameters outside [1e-9, 1e12] are refused with their codes",
+          "[compensation][refusals][range]") {
+  // Fuzz finding K3: D = VK = AK+ = AK- = VP = L = 1.8e-322 all passed "> 0" and TargetPos
+  // became inf / NaN.
+  const double denormal = 1.8e-322;
+  plc::Command all_denormal = good();
+  all_denormal.position = denormal;
+  all_denormal.length = denormal;
+  all_denormal.velocity = denormal;
+  all_denormal.process_velocity = denormal;
+  all_denormal.acceleration = denormal;
+  all_denormal.deceleration = denormal;
+  check_refused(all_denormal, ErrorCode::kCompensationParametersInvalid);
+  for (double bad : {denormal, 0.99e-9, 1.01e12, 1e300}) {
+    INFO("bad value " << bad);
+    plc::Command c = good();
+    c.position = -bad;
+    check_refused(c, ErrorCode::kCompensationParametersInvalid);
+    c = good();
+    c.length = bad;
+    check_refused(c, ErrorCode::kCompensationLengthInvalid);
+    c = good();
+    c.velocity = bad;
+    check_refused(c, ErrorCode::kCompensationVelocityInvalid);
+    c = good();
+    c.process_velocity = bad;
+    check_refused(c, ErrorCode::kCompensationVelocityInvalid);
+    c = good();
+    c.acceleration = bad;
+    check_refused(c, ErrorCode::kCompensationAccelerationInvalid);
+    c = good();
+    c.deceleration = bad;
+    check_refused(c, ErrorCode::kCompensationAccelerationInvalid);
+  }
+}
+
 TEST_CASE("an encoder axis cannot carry out a compensation (0x4040)", "[compensation][refusals]") {
   nc::AxisConfig config = kt::seed_axis();
   config.kind = nc::AxisKind::kEncoder;
