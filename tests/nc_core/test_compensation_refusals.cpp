@@ -103,26 +103,24 @@ TEST_CASE("compensation parameters outside [1e-9, 1e12] are refused with their c
   all_denormal.acceleration = denormal;
   all_denormal.deceleration = denormal;
   check_refused(all_denormal, ErrorCode::kCompensationParametersInvalid);
+  using C = plc::Command;
+  const struct {
+    double C::*field;
+    double sign;
+    ErrorCode code;
+  } fields[] = {{&C::position, -1.0, ErrorCode::kCompensationParametersInvalid},
+                {&C::length, 1.0, ErrorCode::kCompensationLengthInvalid},
+                {&C::velocity, 1.0, ErrorCode::kCompensationVelocityInvalid},
+                {&C::process_velocity, 1.0, ErrorCode::kCompensationVelocityInvalid},
+                {&C::acceleration, 1.0, ErrorCode::kCompensationAccelerationInvalid},
+                {&C::deceleration, 1.0, ErrorCode::kCompensationAccelerationInvalid}};
   for (double bad : {denormal, 0.99e-9, 1.01e12, 1e300}) {
-    INFO("bad value " << bad);
-    plc::Command c = good();
-    c.position = -bad;
-    check_refused(c, ErrorCode::kCompensationParametersInvalid);
-    c = good();
-    c.length = bad;
-    check_refused(c, ErrorCode::kCompensationLengthInvalid);
-    c = good();
-    c.velocity = bad;
-    check_refused(c, ErrorCode::kCompensationVelocityInvalid);
-    c = good();
-    c.process_velocity = bad;
-    check_refused(c, ErrorCode::kCompensationVelocityInvalid);
-    c = good();
-    c.acceleration = bad;
-    check_refused(c, ErrorCode::kCompensationAccelerationInvalid);
-    c = good();
-    c.deceleration = bad;
-    check_refused(c, ErrorCode::kCompensationAccelerationInvalid);
+    for (const auto& f : fields) {
+      INFO("bad value " << f.sign * bad << " in field " << (&f - fields));
+      plc::Command c = good();
+      c.*f.field = f.sign * bad;
+      check_refused(c, f.code);
+    }
   }
 }
 
