@@ -5,6 +5,7 @@
 // NC→PLC images stay bit-identical.
 #include <catch2/catch.hpp>
 
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -20,15 +21,21 @@ namespace {
 // Values just outside the range, the kept fuzz inputs' values, and the extremes of a double.
 const double kOutside[] = {0.99e-9, 2.2e-308, 4.9e-324, 1.01e12, 2.2e301, 1.7e308};
 
-void add_bad_dynamics(std::vector<Bad>& out, const plc::Command& good, const std::string& name) {
+// "MoveAbsolute acceleration 1e-09": what a case is, for the failure message.
+std::string label(const char* name, const char* field, double value) {
+  std::ostringstream out;
+  out << name << ' ' << field << ' ' << value;
+  return out.str();
+}
+
+void add_bad_dynamics(std::vector<Bad>& out, const plc::Command& good, const char* name) {
   using C = plc::Command;
   for (double v : kOutside) {
-    const std::string s = std::to_string(v);
-    out.push_back({name + " acceleration " + s, with(good, &C::acceleration, v),
+    out.push_back({label(name, "acceleration", v), with(good, &C::acceleration, v),
                    ErrorCode::kAccelerationNotAllowed});
-    out.push_back({name + " deceleration " + s, with(good, &C::deceleration, v),
+    out.push_back({label(name, "deceleration", v), with(good, &C::deceleration, v),
                    ErrorCode::kDecelerationNotAllowed});
-    out.push_back({name + " jerk " + s, with(good, &C::jerk, v), ErrorCode::kJerkNotAllowed});
+    out.push_back({label(name, "jerk", v), with(good, &C::jerk, v), ErrorCode::kJerkNotAllowed});
   }
 }
 
@@ -45,13 +52,12 @@ TEST_CASE("dynamics outside [1e-9, 1e12] are refused at the start and disturb no
   add_bad_dynamics(bads, kt::move_relative(100.0, 1000.0), "MoveRelative");
   add_bad_dynamics(bads, kt::move_velocity(500.0, 1), "MoveVelocity");
   for (double v : kOutside) {
-    const std::string s = std::to_string(v);
     for (CommandType type : {CommandType::kHalt, CommandType::kStop}) {
-      const std::string name = type == CommandType::kHalt ? "Halt" : "Stop";
-      bads.push_back({name + " deceleration " + s, kt::simple(type, v, 30000.0),
+      const char* name = type == CommandType::kHalt ? "Halt" : "Stop";
+      bads.push_back({label(name, "deceleration", v), kt::simple(type, v, 30000.0),
                       ErrorCode::kDecelerationNotAllowed});
       bads.push_back(
-          {name + " jerk " + s, kt::simple(type, 3000.0, v), ErrorCode::kJerkNotAllowed});
+          {label(name, "jerk", v), kt::simple(type, 3000.0, v), ErrorCode::kJerkNotAllowed});
     }
   }
   // The kept input blocks-stop-huge-deceleration-and-jerk-at-rest: both "larger", so they
@@ -71,12 +77,12 @@ TEST_CASE("targets beyond 1e12 mm are refused with 0x4222 and disturb nothing",
 
   std::vector<Bad> bads;
   for (double p : {1.01e12, -1.01e12, 2.6e307, -1.7e308}) {
-    const std::string s = std::to_string(p);
+    bads.push_back({label("MoveAbsolute", "target", p), kt::move_absolute(p, 1000.0),
+                    ErrorCode::kTargetPositionNotAllowed});
+    bads.push_back({label("MoveRelative", "distance", p), kt::move_relative(p, 1000.0),
+                    ErrorCode::kTargetPositionNotAllowed});
     bads.push_back(
-        {"MoveAbsolute " + s, kt::move_absolute(p, 1000.0), ErrorCode::kTargetPositionNotAllowed});
-    bads.push_back(
-        {"MoveRelative " + s, kt::move_relative(p, 1000.0), ErrorCode::kTargetPositionNotAllowed});
-    bads.push_back({"NewPos " + s, kt::new_pos(p), ErrorCode::kTargetPositionNotAllowed});
+        {label("NewPos", "target", p), kt::new_pos(p), ErrorCode::kTargetPositionNotAllowed});
   }
   // The kept input blocks-move-tiny-acceleration-huge-target: A+ 2.2e-308, target 2.6e307.
   bads.push_back({"MoveAbsolute A 2.2e-308 to 2.6e307",
