@@ -95,14 +95,8 @@ TEST_CASE("compensation parameters outside [1e-9, 1e12] are refused with their c
   // Fuzz finding K3: D = VK = AK+ = AK- = VP = L = 1.8e-322 all passed "> 0" and TargetPos
   // became inf / NaN.
   const double denormal = 1.8e-322;
-  plc::Command all_denormal = good();
-  all_denormal.position = denormal;
-  all_denormal.length = denormal;
-  all_denormal.velocity = denormal;
-  all_denormal.process_velocity = denormal;
-  all_denormal.acceleration = denormal;
-  all_denormal.deceleration = denormal;
-  check_refused(all_denormal, ErrorCode::kCompensationParametersInvalid);
+  check_refused(kt::move_superimposed(denormal, denormal, denormal, denormal, denormal, denormal),
+                ErrorCode::kCompensationParametersInvalid);
   using C = plc::Command;
   const struct {
     double C::*field;
