@@ -90,6 +90,34 @@ TEST_CASE("bad compensation start parameters are refused with their codes",
   }
 }
 
+TEST_CASE("compensation parameters outside [1e-9, 1e12] are refused with their codes",
+          "[compensation][refusals][range]") {
+  // Fuzz finding K3: D = VK = AK+ = AK- = VP = L = 1.8e-322 all passed "> 0" and TargetPos
+  // became inf / NaN.
+  const double denormal = 1.8e-322;
+  check_refused(kt::move_superimposed(denormal, denormal, denormal, denormal, denormal, denormal),
+                ErrorCode::kCompensationParametersInvalid);
+  using C = plc::Command;
+  const struct {
+    double C::*field;
+    double sign;
+    ErrorCode code;
+  } fields[] = {{&C::position, -1.0, ErrorCode::kCompensationParametersInvalid},
+                {&C::length, 1.0, ErrorCode::kCompensationLengthInvalid},
+                {&C::velocity, 1.0, ErrorCode::kCompensationVelocityInvalid},
+                {&C::process_velocity, 1.0, ErrorCode::kCompensationVelocityInvalid},
+                {&C::acceleration, 1.0, ErrorCode::kCompensationAccelerationInvalid},
+                {&C::deceleration, 1.0, ErrorCode::kCompensationAccelerationInvalid}};
+  for (double bad : {denormal, 0.99e-9, 1.01e12, 1e300}) {
+    for (const auto& f : fields) {
+      INFO("bad value " << f.sign * bad << " in field " << (&f - fields));
+      plc::Command c = good();
+      c.*f.field = f.sign * bad;
+      check_refused(c, f.code);
+    }
+  }
+}
+
 TEST_CASE("an encoder axis cannot carry out a compensation (0x4040)", "[compensation][refusals]") {
   nc::AxisConfig config = kt::seed_axis();
   config.kind = nc::AxisKind::kEncoder;

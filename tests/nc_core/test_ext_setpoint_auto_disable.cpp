@@ -63,6 +63,41 @@ TEST_CASE("a packet with NaN is not taken: axis error 0x4F02, generation off, em
   }
 }
 
+TEST_CASE(
+    "a finite packet out of range is not taken: axis error 0x4359, generation off, emergency "
+    "ramp",
+    "[ext_setpoint][auto_disable][range]") {
+  // Fuzz finding K2: ExtSetPos and ExtSetVelo of 2.3e302 were taken and the controller
+  // overflowed. Out of range: carried velocity above the max velocity (2200 mm/s), |p| or |a|
+  // above 1e12.
+  struct Packet {
+    double p, v, a;
+  };
+  for (const Packet& bad :
+       {Packet{2.3e302, 2.3e302, 0.0}, Packet{50.5, 2200.5, 0.0}, Packet{50.5, -2300.0, 0.0},
+        Packet{1.01e12, 500.0, 0.0}, Packet{50.5, 500.0, 1.01e12}}) {
+    INFO("packet " << bad.p << " " << bad.v << " " << bad.a);
+    kt::Harness h;
+    run_ramp(h, 100);
+    kt::feed(*h.x, bad.p, bad.v, bad.a, 1);
+    h.cycles(1);
+    CHECK(h.x->NcToPlc.ErrorCode == kt::id(ErrorCode::kSetVelocityNotAllowed));
+    CHECK_FALSE(kt::bit(*h.x, plc::kStateExtSetPointGenEnabled));
+    // Not taken: the set state went on at 500 mm/s for this cycle.
+    CHECK(h.x->NcToPlc.SetPos == 50.5);
+    CHECK(h.x->NcToPlc.SetVelo == 500.0);
+    check_brakes_smoothly(h, 500.0);
+    CHECK(std::isfinite(h.x->NcToPlc.ActPos));
+  }
+  // At the max velocity itself the packet is taken.
+  kt::Harness h;
+  run_ramp(h, 100);
+  kt::feed(*h.x, 52.7, 2200.0, 0.0, 1);
+  h.cycles(1);
+  CHECK(h.x->NcToPlc.ErrorCode == 0);
+  CHECK(h.x->NcToPlc.SetVelo == 2200.0);
+}
+
 TEST_CASE("an axis error switches the generation off", "[ext_setpoint][auto_disable]") {
   kt::Harness h;
   run_ramp(h, 100);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "axis/servo_axis.hpp"
+#include "profile/validate.hpp"
 
 namespace nc::detail {
 
@@ -18,6 +19,13 @@ double velocity_direction(int32_t direction) noexcept {
   if (direction == plc::MC_Positive_Direction) return 1.0;
   if (direction == -1 || direction == plc::MC_Negative_Direction) return -1.0;
   return 0.0;
+}
+
+// A command's A, D or J: 0 = the default, otherwise within the planner's numeric range
+// (profile/validate.hpp, docs/behaviour.md "Starts"); negative or outside: `code`.
+ErrorCode check_dynamic(double value, ErrorCode code) noexcept {
+  if (value == 0.0) return ErrorCode::kNone;
+  return check_positive(value, code);
 }
 
 }  // namespace
@@ -108,9 +116,12 @@ ErrorCode ServoAxis::check_dynamics(const plc::Command& command, Limits& limits)
   if (command.velocity > config_.max_velocity || command.velocity > config_.ref_velocity) {
     return ErrorCode::kVelocityNotAllowed;
   }
-  if (command.acceleration < 0.0) return ErrorCode::kAccelerationNotAllowed;
-  if (command.deceleration < 0.0) return ErrorCode::kDecelerationNotAllowed;
-  if (command.jerk < 0.0) return ErrorCode::kJerkNotAllowed;
+  ErrorCode code = check_dynamic(command.acceleration, ErrorCode::kAccelerationNotAllowed);
+  if (code == ErrorCode::kNone) {
+    code = check_dynamic(command.deceleration, ErrorCode::kDecelerationNotAllowed);
+  }
+  if (code == ErrorCode::kNone) code = check_dynamic(command.jerk, ErrorCode::kJerkNotAllowed);
+  if (code != ErrorCode::kNone) return code;
   limits.velocity = command.velocity;
   limits.acceleration = command.acceleration > 0.0 ? command.acceleration : config_.acceleration;
   limits.deceleration = command.deceleration > 0.0 ? command.deceleration : config_.deceleration;
@@ -146,7 +157,8 @@ ErrorCode ServoAxis::start_position(const plc::Command& command) noexcept {
 
 ErrorCode ServoAxis::start_to_target(uint16_t number, double target,
                                      const Limits& limits) noexcept {
-  if (!std::isfinite(target)) return ErrorCode::kPositionNotFinite;
+  // NaN / inf 0x4F01; beyond the planner's range (profile/validate.hpp) 0x4222.
+  if (const ErrorCode code = check_target(target); code != ErrorCode::kNone) return code;
   // Seed 000 §2.1 notes 4 and 5: the target must lie inside the software limits; where the axis
   // starts from does not matter, so a start from outside back into the range is allowed.
   if (monitors_.below_min(target) || monitors_.above_max(target)) {
@@ -199,8 +211,15 @@ ErrorCode ServoAxis::start_halt_or_stop(const plc::Command& command) noexcept {
   if (!std::isfinite(command.deceleration) || !std::isfinite(command.jerk)) {
     return ErrorCode::kParameterNotFinite;
   }
-  if (command.deceleration < 0.0) return ErrorCode::kDecelerationNotAllowed;
-  if (command.jerk < 0.0) return ErrorCode::kJerkNotAllowed;
+  if (const ErrorCode code =
+          check_dynamic(command.deceleration, ErrorCode::kDecelerationNotAllowed);
+      code != ErrorCode::kNone) {
+    return code;
+  }
+  if (const ErrorCode code = check_dynamic(command.jerk, ErrorCode::kJerkNotAllowed);
+      code != ErrorCode::kNone) {
+    return code;
+  }
   if (!channel_.controller_enabled()) return ErrorCode::kNoControllerOrFeedEnable;
 
   // 0 = the running motion's deceleration and jerk, or the axis default when nothing runs.

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "profile/validate.hpp"
+
 namespace nc::detail {
 
 namespace {
@@ -21,12 +23,15 @@ ErrorCode Compensation::check(double distance, double length, double process_vel
       !std::isfinite(acceleration) || !std::isfinite(deceleration)) {
     return ErrorCode::kParameterNotFinite;
   }
-  if (distance == 0.0) return ErrorCode::kCompensationParametersInvalid;
-  if (!(length > 0.0)) return ErrorCode::kCompensationLengthInvalid;
-  if (!(velocity_diff > 0.0) || !(process_velocity > 0.0)) {
+  // Besides > 0: within the planner's numeric range [1e-9, 1e12] (profile/validate.hpp; fuzz
+  // finding K3: denormal values passed "> 0" and the trapezoid was not finite).
+  const auto in_range = [](double x) { return x >= kMinLimit && x <= kMaxLimit; };
+  if (!in_range(std::abs(distance))) return ErrorCode::kCompensationParametersInvalid;
+  if (!in_range(length)) return ErrorCode::kCompensationLengthInvalid;
+  if (!in_range(velocity_diff) || !in_range(process_velocity)) {
     return ErrorCode::kCompensationVelocityInvalid;
   }
-  if (!(acceleration > 0.0) || !(deceleration > 0.0)) {
+  if (!in_range(acceleration) || !in_range(deceleration)) {
     return ErrorCode::kCompensationAccelerationInvalid;
   }
   return ErrorCode::kNone;
@@ -41,6 +46,10 @@ ErrorCode Compensation::start(uint16_t number, double distance, double length,
   const Trapezoid trapezoid = Trapezoid::plan(distance, length / process_velocity, velocity_diff,
                                               acceleration, deceleration);
   if (!trapezoid.ok()) return trapezoid.error();
+  // The last line of defence: a trapezoid whose numbers are not finite is never run.
+  if (!std::isfinite(trapezoid.duration() + trapezoid.distance() + trapezoid.peak_velocity())) {
+    return ErrorCode::kCompensationParametersInvalid;
+  }
   trapezoid_ = trapezoid;
   state_ = KinematicState{};
   requested_ = distance;

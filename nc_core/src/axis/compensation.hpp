@@ -27,7 +27,8 @@ class Compensation {
   // The start parameters of seed 000 §2.5 ("Start parameters"): D != 0, L > 0, VP > 0, VK > 0,
   // AK+ > 0, AK- > 0. First broken rule: D not finite kPositionNotFinite, another not finite
   // kParameterNotFinite, D == 0 kCompensationParametersInvalid, L 0x4270, VK / VP 0x4271,
-  // AK+ / AK- 0x4272.
+  // AK+ / AK- 0x4272; |D| and each of the others must also lie in [1e-9, 1e12] (the planner's
+  // numeric range, profile/validate.hpp), else the same codes.
   static ErrorCode check(double distance, double length, double process_velocity,
                          double velocity_diff, double acceleration, double deceleration) noexcept;
 

@@ -3,12 +3,15 @@
 
 #include <cmath>
 
+#include "profile/validate.hpp"
+
 namespace nc::detail {
 
-void ExternalSetpoint::enable(Type type, const KinematicState& start, double target,
-                              double delay) noexcept {
+void ExternalSetpoint::enable(Type type, const KinematicState& start, double target, double delay,
+                              double max_velocity) noexcept {
   target_ = target;
   delay_ = delay;
+  max_velocity_ = max_velocity;
   if (taking() && type == type_) {
     enabled_ = true;
     final_cycle_ = false;
@@ -51,17 +54,22 @@ ExternalSetpoint::Step ExternalSetpoint::take(const plc::PLCTONC_AXIS_REF& in,
     if (std::isfinite(in.ExtSetPos) && std::isfinite(in.ExtSetVelo) &&
         std::isfinite(in.ExtSetAcc)) {
       const double d = delay_;
-      state_ = KinematicState{in.ExtSetPos + in.ExtSetVelo * d + 0.5 * in.ExtSetAcc * d * d,
-                              in.ExtSetVelo + in.ExtSetAcc * d, in.ExtSetAcc};
+      const KinematicState packet{in.ExtSetPos + in.ExtSetVelo * d + 0.5 * in.ExtSetAcc * d * d,
+                                  in.ExtSetVelo + in.ExtSetAcc * d, in.ExtSetAcc};
+      // Finite but out of range (fuzz finding K2): not taken, like a NaN packet.
+      step.too_large = !within_magnitude(packet.p) || !within_magnitude(packet.a) ||
+                       !(std::abs(packet.v) <= max_velocity_);
+      if (!step.too_large) state_ = packet;
     } else {
       step.not_finite = true;
     }
   } else if (position_only && std::isfinite(in.ExtSetPos)) {
-    state_ = KinematicState{in.ExtSetPos, 0.0, 0.0};
+    step.too_large = !within_magnitude(in.ExtSetPos);
+    if (!step.too_large) state_ = KinematicState{in.ExtSetPos, 0.0, 0.0};
   } else {
     step.not_finite = position_only;  // position_only with a non-finite ExtSetPos
   }
-  if (step.not_finite) {
+  if (step.not_finite || step.too_large) {
     const double t = cycle_time;
     state_ = KinematicState{state_.p + state_.v * t + 0.5 * state_.a * t * t,
                             state_.v + state_.a * t, state_.a};

@@ -5,7 +5,9 @@
 // in the first NC cycle whose direction is no longer ±1, and in the first cycle after disabling,
 // the ExtSetPos then in the interface is still taken ("exactly one further cycle"); from the next
 // cycle on the set position is held (velocity and acceleration 0). A non-finite value in a packet
-// that would be taken is not taken: take() reports it and the axis raises an error.
+// that would be taken is not taken: take() reports it and the axis raises an error; so is a
+// finite packet out of range (carried velocity above the axis's max velocity, |p| or |a| above the
+// planner's 1e12), which would overflow the controller and the drive model.
 //
 // Absolute start type: state() is the axis's set state. Relative: state() is an offset added to
 // the internal generator's set values. Value type; cycle functions only (noexcept, no allocation).
@@ -30,6 +32,7 @@ class ExternalSetpoint {
   struct Step {
     KinematicState state;     // the external set state (absolute) or offset (relative)
     bool not_finite = false;  // a packet to be taken held NaN or inf: not taken
+    bool too_large = false;   // a packet to be taken was out of range: not taken
     bool finished = false;    // the cycle after the disable has been taken: generation is over
   };
 
@@ -37,8 +40,10 @@ class ExternalSetpoint {
   // set state at the enable; relative: a zero offset). Enabling again with the same type keeps
   // the state; only the target changes. `delay` (AxisConfig::ext_setpoint_delay, seed 000 §2.6
   // "Optimization options"): a taken packet (p, v, a) counts as p + v d + a d²/2, v + a d, a —
-  // set values carried ahead over the transport dead time.
-  void enable(Type type, const KinematicState& start, double target, double delay) noexcept;
+  // set values carried ahead over the transport dead time. `max_velocity`: the axis's; a packet
+  // whose carried velocity is above it is not taken.
+  void enable(Type type, const KinematicState& start, double target, double delay,
+              double max_velocity) noexcept;
   // Off after one more cycle, which still takes ExtSetPos (seed 000 §2.6 "Disabling").
   void disable() noexcept;
   // Off at once (axis error, reset, controller enable gone, stop): the state is held.
@@ -63,6 +68,7 @@ class ExternalSetpoint {
   Type type_ = Type::kNone;
   double target_ = 0.0;
   double delay_ = 0.0;
+  double max_velocity_ = 0.0;
   bool enabled_ = false;
   bool final_cycle_ = false;
   bool was_moving_ = false;  // the previous cycle's direction was ±1

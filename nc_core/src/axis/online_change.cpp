@@ -31,6 +31,7 @@
 #include <cmath>
 
 #include "axis/servo_axis.hpp"
+#include "profile/validate.hpp"
 
 namespace nc::detail {
 
@@ -63,7 +64,8 @@ bool ServoAxis::stop_active() const noexcept {
 }
 
 ErrorCode ServoAxis::check_new_target(double target) const noexcept {
-  if (monitors_.below_min(target) || monitors_.above_max(target)) {
+  // Beyond the planner's range (profile/validate.hpp) or outside the software limits: 0x4222.
+  if (!within_magnitude(target) || monitors_.below_min(target) || monitors_.above_max(target)) {
     return ErrorCode::kTargetPositionNotAllowed;
   }
   if (job_.kind() != JobKind::kPosition) return ErrorCode::kFunctionNotAllowed;

@@ -30,6 +30,19 @@ bool keeps_table_type(int override_type) noexcept {
   return override_type == 1 || override_type == 2;
 }
 
+// Fuzz finding K4: a new job starting from a hard-accelerating set state brings a back to 0 at
+// its own J, which passes v + a·|a| / 2J; with a smaller J than the running job's that can pass
+// the axis's max velocity. Then the new job takes the running job's (larger) jerk, as Halt and
+// Stop keep the larger values; the running job kept the max velocity with it.
+Limits with_running_jerk(const Limits& limits, const KinematicState& from, const MasterJob& running,
+                         double max_velocity) noexcept {
+  Limits l = limits;
+  if (!running.active() || !(running.limits().jerk > l.jerk)) return l;
+  const double peak = std::abs(from.v + from.a * std::abs(from.a) / (2.0 * l.jerk));
+  if (peak > max_velocity) l.jerk = running.limits().jerk;
+  return l;
+}
+
 }  // namespace
 
 void ServoAxis::read_override() noexcept {
@@ -65,31 +78,33 @@ bool ServoAxis::plan_table(const KinematicState& from, double target, const Limi
 
 ErrorCode ServoAxis::start_positioning(uint16_t number, double target,
                                        const Limits& limits) noexcept {
+  const Limits planned = with_running_jerk(limits, set_, job_, config_.max_velocity);
   // Planned at 100 % first: its peak is the level reduced at the start (types 1 and 3).
-  scratch_ = plan_position(set_, target, limits);
+  scratch_ = plan_position(set_, target, planned);
   if (!scratch_.ok()) return scratch_.error();
-  const double reduced = reduced_level(scratch_, limits.velocity);
+  const double reduced = reduced_level(scratch_, planned.velocity);
   const double direction = target >= set_.p ? 1.0 : -1.0;
   const uint32_t override_value = job_.override_value();
-  const double level = override_level(limits.velocity, reduced, override_value);
+  const double level = override_level(planned.velocity, reduced, override_value);
   bool final = true;
-  if (override_value != plc::kOverrideFull && !plan_table(set_, target, limits, level, final)) {
+  if (override_value != plc::kOverrideFull && !plan_table(set_, target, planned, level, final)) {
     return scratch_.error();
   }
-  accept(JobKind::kPosition, number, scratch_, target, final ? direction * level : 0.0, limits);
-  job_.set_levels(limits.velocity, reduced, direction);
+  accept(JobKind::kPosition, number, scratch_, target, final ? direction * level : 0.0, planned);
+  job_.set_levels(planned.velocity, reduced, direction);
   if (!final) job_.replan(scratch_, false);  // a start at override 0 waits at rest
   return ErrorCode::kNone;
 }
 
 ErrorCode ServoAxis::start_continuous(uint16_t number, double velocity,
                                       const Limits& limits) noexcept {
+  const Limits planned = with_running_jerk(limits, set_, job_, config_.max_velocity);
   const double direction = velocity < 0.0 ? -1.0 : 1.0;
   const double speed = std::abs(velocity);
   const double level = speed * override_factor(job_.override_value());
-  scratch_ = plan_velocity(set_, direction * level, limits);
+  scratch_ = plan_velocity(set_, direction * level, planned);
   if (!scratch_.ok()) return scratch_.error();
-  accept(JobKind::kVelocity, number, scratch_, target_, direction * level, limits);
+  accept(JobKind::kVelocity, number, scratch_, target_, direction * level, planned);
   job_.set_levels(speed, speed, direction);
   return ErrorCode::kNone;
 }

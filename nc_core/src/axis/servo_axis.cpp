@@ -100,6 +100,7 @@ void ServoAxis::generate_set_values(std::span<const AxisSnapshot> snapshots) noe
     return;
   }
   bool not_finite = false;
+  bool too_large = false;
   bool absolute_ended = false;
   switch (source()) {
     case SetValueSource::kPtpJob:
@@ -112,6 +113,7 @@ void ServoAxis::generate_set_values(std::span<const AxisSnapshot> snapshots) noe
       base_ = step.state;
       set_jerk_ = 0.0;
       not_finite = step.not_finite;
+      too_large = step.too_large;
       absolute_ended = step.finished;
       break;
     }
@@ -147,6 +149,8 @@ void ServoAxis::generate_set_values(std::span<const AxisSnapshot> snapshots) noe
   }
   // A packet with NaN or inf is not taken; the axis must not run on it (SPEC B8).
   if (not_finite || r.not_finite) raise_error(ErrorCode::kParameterNotFinite);
+  // A finite packet out of range (external_setpoint.hpp) is not taken either: 0x4359.
+  if (too_large || r.too_large) raise_error(ErrorCode::kSetVelocityNotAllowed);
 }
 
 SetValueSource ServoAxis::source() const noexcept {

@@ -104,13 +104,14 @@ ErrorCode ServoAxis::enable_external(const plc::Command& command) noexcept {
       base_ = set_;  // the external set values take over from here
       stack_.drop_held();
     }
-    stack_.external().enable(type, set_, target, config_.ext_setpoint_delay);
+    stack_.external().enable(type, set_, target, config_.ext_setpoint_delay, config_.max_velocity);
   } else {
     // Relative: the target refers to the internal generator's target (or position).
     const double reference =
         job_.kind() == JobKind::kPosition ? job_.target() + stack_.held() : basic_state().p;
     target += reference;
-    stack_.external().enable(type, KinematicState{}, target, config_.ext_setpoint_delay);
+    stack_.external().enable(type, KinematicState{}, target, config_.ext_setpoint_delay,
+                             config_.max_velocity);
   }
   target_ = target;
   monitors_.reset_windows();

@@ -36,6 +36,7 @@ SuperpositionStack::Result SuperpositionStack::superimpose(const Basic& basic,
   if (external_.taking() && external_.type() == Type::kRelative) {
     const ExternalSetpoint::Step step = external_.take(in, cycle_time);
     r.not_finite = step.not_finite;
+    r.too_large = step.too_large;
     total.p += step.state.p;
     total.v += step.state.v;
     total.a += step.state.a;

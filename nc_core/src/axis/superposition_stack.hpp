@@ -34,6 +34,7 @@ class SuperpositionStack {
     double target = 0.0;  // the job's end moved by the superpositions (when target_moved)
     bool target_moved = false;
     bool not_finite = false;  // a relative external packet held NaN / inf (not taken)
+    bool too_large = false;   // a relative external packet was out of range (not taken)
   };
 
   // Step b: the set values = basic + held + compensation + relative external offset. Ends a

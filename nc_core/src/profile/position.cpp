@@ -48,7 +48,7 @@ Profile finish(const KinematicState& start, double target, double dir, const Pie
 
 Profile plan_position(const KinematicState& start, double target, const Limits& limits) noexcept {
   ErrorCode e = detail::check_state(start);
-  if (e == ErrorCode::kNone && !std::isfinite(target)) e = ErrorCode::kPositionNotFinite;
+  if (e == ErrorCode::kNone) e = detail::check_target(target);
   if (e == ErrorCode::kNone) e = detail::check_limits(limits);
   if (e != ErrorCode::kNone) return Profile::failure(e);
 

@@ -7,25 +7,61 @@
 
 namespace nc::detail {
 
+// The numeric range the planner works in (docs/behaviour.md, "Profile"). Every limit (V, A+, A-,
+// J, a stop's deceleration and jerk) lies in [kMinLimit, kMaxLimit] and every |p|, |v|, |a| of
+// the start and |target| is at most kMaxMagnitude. Outside, the closed forms (A²/J, V²/A, …)
+// overflow or underflow and a double no longer resolves the 1e-9 relative end state the planner
+// promises. The planner suites span V 1e-2…1e5, A 1e-1…1e7, J 1…1e9, distances 1e-6…1e5: both
+// ends stay at least 1e6 away from them. A start velocity or acceleration (and plan_velocity's
+// target velocity) is 0 or at least kMinMagnitude in size: subnormal values (fuzz: v = 4.9e-324,
+// a = 1.4e-322) lose their precision in the planner's products and quotients.
+inline constexpr double kMinLimit = 1e-9;
+inline constexpr double kMaxLimit = 1e12;
+inline constexpr double kMaxMagnitude = 1e12;
+inline constexpr double kMinMagnitude = 1e-100;
+
+inline bool within_magnitude(double value) noexcept {
+  return std::abs(value) <= kMaxMagnitude;
+}
+
+// 0, or |value| in [kMinMagnitude, kMaxMagnitude].
+inline bool velocity_in_range(double value) noexcept {
+  return value == 0.0 || (std::abs(value) >= kMinMagnitude && within_magnitude(value));
+}
+
+// NaN / inf: kStateNotFinite; |p| beyond kMaxMagnitude, or v, a neither 0 nor within
+// [kMinMagnitude, kMaxMagnitude]: the code of that quantity.
 inline ErrorCode check_state(const KinematicState& s) noexcept {
   if (!std::isfinite(s.p) || !std::isfinite(s.v) || !std::isfinite(s.a)) {
     return ErrorCode::kStateNotFinite;
   }
+  if (!within_magnitude(s.p)) return ErrorCode::kTargetPositionNotAllowed;
+  if (!velocity_in_range(s.v)) return ErrorCode::kVelocityNotAllowed;
+  if (!velocity_in_range(s.a)) return ErrorCode::kAccelerationNotAllowed;
   return ErrorCode::kNone;
 }
 
-inline ErrorCode check_positive(double value, ErrorCode not_positive) noexcept {
+// NaN / inf: kParameterNotFinite; <= 0 or outside [kMinLimit, kMaxLimit]: `not_allowed`.
+inline ErrorCode check_positive(double value, ErrorCode not_allowed) noexcept {
   if (!std::isfinite(value)) return ErrorCode::kParameterNotFinite;
-  if (!(value > 0.0)) return not_positive;
+  if (!(value >= kMinLimit && value <= kMaxLimit)) return not_allowed;
   return ErrorCode::kNone;
 }
 
 inline ErrorCode check_limits(const Limits& l) noexcept {
-  ErrorCode e = check_positive(l.velocity, ErrorCode::kVelocityNotPositive);
+  ErrorCode e = check_positive(l.velocity, l.velocity > 0.0 ? ErrorCode::kVelocityNotAllowed
+                                                            : ErrorCode::kVelocityNotPositive);
   if (e == ErrorCode::kNone) e = check_positive(l.acceleration, ErrorCode::kAccelerationNotAllowed);
   if (e == ErrorCode::kNone) e = check_positive(l.deceleration, ErrorCode::kDecelerationNotAllowed);
   if (e == ErrorCode::kNone) e = check_positive(l.jerk, ErrorCode::kJerkNotAllowed);
   return e;
+}
+
+// A target position: NaN / inf kPositionNotFinite, beyond kMaxMagnitude kTargetPositionNotAllowed.
+inline ErrorCode check_target(double target) noexcept {
+  if (!std::isfinite(target)) return ErrorCode::kPositionNotFinite;
+  if (!within_magnitude(target)) return ErrorCode::kTargetPositionNotAllowed;
+  return ErrorCode::kNone;
 }
 
 // The last line of defence against overflow with extreme (finite) inputs: a profile whose

@@ -30,7 +30,8 @@ Profile plan_velocity(const KinematicState& start, double velocity, const Limits
   ErrorCode e = detail::check_state(start);
   if (e == ErrorCode::kNone) e = detail::check_limits(limits);
   if (e == ErrorCode::kNone && !std::isfinite(velocity)) e = ErrorCode::kParameterNotFinite;
-  if (e == ErrorCode::kNone && std::abs(velocity) > limits.velocity) {
+  if (e == ErrorCode::kNone &&
+      (std::abs(velocity) > limits.velocity || !detail::velocity_in_range(velocity))) {
     e = ErrorCode::kVelocityNotAllowed;
   }
   if (e != ErrorCode::kNone) return Profile::failure(e);

@@ -1,0 +1,106 @@
+// The planner's numeric range (docs/behaviour.md, "Profile"; fuzz finding P1): limits in
+// [1e-9, 1e12], |p|, |v|, |a| of the start and |target| at most 1e12, a start v, a 0 or at
+// least 1e-100 in size. Outside, a problem is refused with the code of the quantity; at the edges
+// of the range it is planned and keeps its contract.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "nc_core/profile.hpp"
+#include "profile_checks.hpp"
+
+namespace {
+
+using nc::ErrorCode;
+using nc::KinematicState;
+using nc::Limits;
+using nc::Profile;
+
+const Limits kLimits{2000.0, 5000.0, 5000.0, 50000.0};
+
+void check_refused(const Profile& prof, ErrorCode code) {
+  CHECK_FALSE(prof.ok());
+  CHECK(prof.error() == code);
+  CHECK(std::isfinite(prof.duration()));
+  const KinematicState x = prof.at(0.5);
+  CHECK((std::isfinite(x.p) && std::isfinite(x.v) && std::isfinite(x.a)));
+}
+
+Limits with_field(Limits l, int field, double value) {
+  (field == 0   ? l.velocity
+   : field == 1 ? l.acceleration
+   : field == 2 ? l.deceleration
+                : l.jerk) = value;
+  return l;
+}
+
+}  // namespace
+
+TEST_CASE("limits outside [1e-9, 1e12] are refused with the code of the limit",
+          "[profile][range]") {
+  const KinematicState rest{0.0, 0.0, 0.0};
+  const ErrorCode codes[] = {ErrorCode::kVelocityNotAllowed, ErrorCode::kAccelerationNotAllowed,
+                             ErrorCode::kDecelerationNotAllowed, ErrorCode::kJerkNotAllowed};
+  for (double bad : {0.99e-9, 4.4e-322, 1.01e12, 3.9e118, 1.7e308}) {
+    INFO("bad value " << bad);
+    for (int field = 0; field < 4; ++field) {
+      const Limits l = with_field(kLimits, field, bad);
+      check_refused(nc::plan_position(rest, 100.0, l), codes[field]);
+      check_refused(nc::plan_velocity(rest, 0.0, l), codes[field]);
+    }
+    check_refused(nc::plan_stop(rest, bad, 50000.0), ErrorCode::kDecelerationNotAllowed);
+    check_refused(nc::plan_stop(rest, 5000.0, bad), ErrorCode::kJerkNotAllowed);
+  }
+}
+
+TEST_CASE("a start or target beyond 1e12 is refused with the code of the quantity",
+          "[profile][range]") {
+  for (double bad : {1.01e12, -1.01e12, 1e300, -1.7e308}) {
+    INFO("bad value " << bad);
+    check_refused(nc::plan_position({bad, 0.0, 0.0}, 0.0, kLimits),
+                  ErrorCode::kTargetPositionNotAllowed);
+    check_refused(nc::plan_position({0.0, 0.0, 0.0}, bad, kLimits),
+                  ErrorCode::kTargetPositionNotAllowed);
+    check_refused(nc::plan_position({0.0, bad, 0.0}, 100.0, kLimits),
+                  ErrorCode::kVelocityNotAllowed);
+    check_refused(nc::plan_velocity({0.0, 0.0, bad}, 0.0, kLimits),
+                  ErrorCode::kAccelerationNotAllowed);
+    check_refused(nc::plan_stop({0.0, bad, 0.0}, 5000.0, 50000.0), ErrorCode::kVelocityNotAllowed);
+  }
+}
+
+TEST_CASE("a subnormal start velocity or acceleration is refused, 1e-100 is planned",
+          "[profile][range]") {
+  // The fuzz input planner-subnormal-start-state: v = -4.9e-324, a = 1.4e-322 broke continuity.
+  const Limits small{0.0157, 0.0106, 0.0106, 0.0106};
+  check_refused(nc::plan_position({0.0, -4.9406564584124654e-324, 0.0}, 0.0106, small),
+                ErrorCode::kVelocityNotAllowed);
+  check_refused(nc::plan_position({0.0, 0.0, 1.3833838083554903e-322}, 0.0106, small),
+                ErrorCode::kAccelerationNotAllowed);
+  check_refused(nc::plan_velocity({0.0, 0.0, 0.0}, 1e-300, small), ErrorCode::kVelocityNotAllowed);
+  const KinematicState tiny{0.0, 1e-100, -1e-100};
+  const Profile prof = nc::plan_position(tiny, 0.0106, small);
+  REQUIRE(prof.ok());
+  CHECK(profile_checks::check_position_profile(prof, tiny, 0.0106, small).ok());
+}
+
+TEST_CASE("problems at the edges of the range are planned and keep the contract",
+          "[profile][range]") {
+  // The kept fuzz input of P1 (J = 3.9e118 with A = 100) is refused above; J = 1e12 with A = 100
+  // and the smallest limits are planned exactly.
+  const Limits big_jerk{2000.0, 100.0, 100.0, 1e12};
+  const Profile a = nc::plan_position({0.0, 0.0, 0.0}, 4900.0, big_jerk);
+  REQUIRE(a.ok());
+  CHECK(profile_checks::check_position_profile(a, {0.0, 0.0, 0.0}, 4900.0, big_jerk).ok());
+
+  const Limits small{1e-9, 1e-9, 1e-9, 1e-9};
+  const Profile b = nc::plan_position({0.0, 0.0, 0.0}, 1e-6, small);
+  REQUIRE(b.ok());
+  CHECK(profile_checks::check_position_profile(b, {0.0, 0.0, 0.0}, 1e-6, small).ok());
+
+  const Limits large{1e12, 1e12, 1e12, 1e12};
+  const KinematicState far{-1e12, 0.0, 0.0};
+  const Profile c = nc::plan_position(far, 1e12, large);
+  REQUIRE(c.ok());
+  CHECK(profile_checks::check_position_profile(c, far, 1e12, large).ok());
+}
