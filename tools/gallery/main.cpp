@@ -32,7 +32,8 @@ int main(int argc, char** argv) {
     for (const fs::path& file : files) {
       const nlohmann::json timeline = scenario::read_json_file(file);
       if (!timeline.is_object() || !timeline.contains("axes") || !timeline["axes"].is_string()) {
-        throw scenario::InputError(file.string(), "/axes", "a gallery scenario names its axes file");
+        throw scenario::InputError(file.string(), "/axes",
+                                   "a gallery scenario names its axes file");
       }
       const fs::path axes_file = file.parent_path() / timeline["axes"].get<std::string>();
       scenario::Scenario s(scenario::read_json_file(axes_file), timeline, axes_file.string(),
