@@ -2,6 +2,11 @@
 // targets and the soak. Under AddressSanitizer (libFuzzer builds, the sanitizer test build) the
 // sanitizer's allocator hook counts; otherwise the tests' counting operator new does.
 //
+// Only the thread that opened the region counts. The sanitizer hook sees every thread's malloc,
+// and libFuzzer starts its RSS watcher thread just before it runs the first inputs: on a loaded
+// machine that thread's start-up allocations (glibc, ASan) fell inside the first regions and
+// looked like an allocation in the NC cycle (finding A1, docs/reliability.md).
+//
 // ONE-DEFINITION RULE: without a sanitizer this header includes counting_allocator.hpp, which
 // defines the replacement operator new — include it from exactly one translation unit per
 // executable (the target's own .cpp).
@@ -23,7 +28,8 @@ extern "C" int __sanitizer_install_malloc_and_free_hooks(void (*malloc_hook)(con
                                                          void (*free_hook)(const volatile void*));
 
 namespace fuzz::alloc {
-inline bool g_counting = false;
+// A thread_local of the executable with a constant initialiser: reading it never allocates.
+inline thread_local bool g_counting = false;
 inline long g_allocations = 0;
 inline void on_malloc(const volatile void*, std::size_t) {
   if (g_counting) ++g_allocations;
