@@ -136,9 +136,13 @@ class ServoAxis {
   // superpositions on top.
   void install_table(double target, bool final, double level) noexcept;
 
-  // --- coupling.cpp (C1, C3, C4 at rest; seed 000 §3.2.2-3.2.3) ---
+  // --- coupling.cpp (C1, C3, C4; seed 000 §3.2.2-3.2.3) ---
   ErrorCode gear_in(const plc::Command& command, CouplingPort& port) noexcept;
   ErrorCode gear_out(const plc::Command& command, CouplingPort& port) noexcept;
+  // Online decoupling: the levels from the head of this slave's cascade down to it, and the
+  // head. False (0x424D) when the head runs no PTP job or the cascade is too deep.
+  bool decoupling_chain(CouplingPort& port, DecouplingChain& chain,
+                        const ServoAxis*& head) const noexcept;
   // At rest for a coupling: no job, set velocity and acceleration 0, no compensation running,
   // no external generation enabled (seed 000 §3.2.2 "both axes are stationary").
   bool at_rest_for_coupling() const noexcept;
