@@ -17,6 +17,8 @@ struct AxisSnapshot {
   double set_velocity = 0.0;
   double set_acceleration = 0.0;
   double set_jerk = 0.0;
+  double target_position = 0.0;  // NcToPlc.TargetPos / TargetVelo of this cycle (a slave: its
+  double target_velocity = 0.0;  // master's, transformed by factor and offset)
   double actual_position = 0.0;
   double actual_velocity = 0.0;
   double actual_acceleration = 0.0;

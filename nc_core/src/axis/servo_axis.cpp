@@ -34,6 +34,14 @@ void ServoAxis::phase_commands(CouplingPort& port) noexcept {
 void ServoAxis::phase_set_values(AxisSnapshot& snapshot,
                                  std::span<const AxisSnapshot> snapshots) noexcept {
   generate_set_values(snapshots);
+  if (slave_link_.coupled) {
+    // Seed 000 §3.2.2: slave target velocity = coupling factor × master target velocity.
+    const AxisSnapshot& master = snapshots[slave_link_.master];
+    target_ = slave_link_.factor * master.target_position + slave_link_.offset;
+    slave_target_velocity_ = slave_link_.factor * master.target_velocity;
+  }
+  snapshot.target_position = target_;
+  snapshot.target_velocity = target_velocity();
   snapshot.set_position = set_.p;
   snapshot.set_velocity = set_.v;
   snapshot.set_acceleration = set_.a;
@@ -80,8 +88,9 @@ void ServoAxis::check_enables() noexcept {
     return;
   }
   // Feed enable removed in the direction of travel: the axis stops on its error ramp (also when
-  // external setpoints move it).
-  if ((job_.is_motion() || stack_.external().enabled()) && !channel_.has_error()) {
+  // external setpoints move it; a coupled slave's error stops its group, see Kernel).
+  if ((job_.is_motion() || stack_.external().enabled() || slave_link_.coupled) &&
+      !channel_.has_error()) {
     if (set_.v > 0.0 && !channel_.feed_enabled(1.0)) {
       raise_error(ErrorCode::kFeedEnablePlusMissing);
     } else if (set_.v < 0.0 && !channel_.feed_enabled(-1.0)) {
@@ -193,7 +202,8 @@ void ServoAxis::run_monitors() noexcept {
   }
   // Software limits during motion: the set position passes an enabled limit while it moves
   // outward. Moving back in from outside (seed 000 §2.1 note 5) is not an error.
-  if (!channel_.has_error() && job_.active() && job_.kind() != JobKind::kEmergencyStop) {
+  const bool moving_on_its_own = job_.active() && job_.kind() != JobKind::kEmergencyStop;
+  if (!channel_.has_error() && (moving_on_its_own || slave_link_.coupled)) {
     if (set_.v > 0.0 && monitors_.above_max(set_.p)) {
       raise_error(ErrorCode::kSoftLimitMaxDuringMotion);
     } else if (set_.v < 0.0 && monitors_.below_min(set_.p)) {
@@ -264,6 +274,10 @@ void ServoAxis::raise_error(ErrorCode code) noexcept {
   job_.start(JobKind::kEmergencyStop, 0, scratch_, scratch_.final_state().p, 0.0, limits);
   target_ = scratch_.final_state().p;
   monitors_.reset_windows();
+}
+
+void ServoAxis::group_error(ErrorCode code) noexcept {
+  raise_error(code);
 }
 
 void ServoAxis::reset_error() noexcept {

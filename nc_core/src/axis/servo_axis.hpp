@@ -62,6 +62,10 @@ class ServoAxis {
   void phase_drive(AxisSnapshot& snapshot) noexcept;     // (d)
   void phase_monitors(AxisSnapshot& snapshot) noexcept;  // (e)
   void phase_publish(uint64_t cycle_counter) noexcept;   // (f)
+  // (e), after every axis's monitors: the group reaction (SPEC C7 INSTANTANEOUS) reaches this
+  // axis with the faulty axis's code; the first error stays. A slave goes on following (its
+  // head master's emergency ramp brings it down); a master stops on its emergency ramp.
+  void group_error(ErrorCode code) noexcept;
 
  private:
   // --- commands.cpp ---
@@ -191,7 +195,12 @@ class ServoAxis {
   }
   SuperpositionStack stack_{};
   SlaveLink slave_link_{};
-  uint32_t slave_count_ = 0;  // axes coupled to this one as their master
+  uint32_t slave_count_ = 0;            // axes coupled to this one as their master
+  double slave_target_velocity_ = 0.0;  // while coupled: factor × the master's TargetVelo
+  double target_velocity() const noexcept {
+    if (slave_link_.coupled) return slave_target_velocity_;
+    return job_.active() ? job_.target_velocity() : 0.0;
+  }
   double set_jerk_ = 0.0;
   double previous_set_position_ = 0.0;
   double previous_measured_ = 0.0;
