@@ -25,7 +25,6 @@ bool ServoAxis::refused_while_coupled(CommandType type) noexcept {
     case CommandType::kStop:
     case CommandType::kNewPos:
     case CommandType::kNewPosAndVelo:
-    case CommandType::kMoveSuperImposed:
     case CommandType::kExtSetPointGenEnable:
     case CommandType::kGearInDyn:
     case CommandType::kHome:
@@ -49,7 +48,8 @@ ErrorCode ServoAxis::gear_in(const plc::Command& command, CouplingPort& port) no
     // slave's position continuous (SPEC C2). Another master needs MC_GearOut first.
     if (master_index != slave_link_.master) return ErrorCode::kFunctionNotAllowed;
     channel_.take_over(command.number, slave_link_.command);  // the former instance: kAborted
-    slave_link_.couple(master_index, command.number, command.ratio, set_.p, master.set_.p);
+    // From the basic set position: a compensation of the slave (C5) goes on on top of it.
+    slave_link_.couple(master_index, command.number, command.ratio, base_.p, master.set_.p);
     channel_.answer_current(CommandState::kReached);
     return ErrorCode::kNone;
   }
@@ -80,15 +80,16 @@ bool ServoAxis::decoupling_chain(CouplingPort& port, DecouplingChain& chain,
   // kept, it never completes). Collected slave first, applied head first.
   DecouplingChain up;
   const ServoAxis* axis = this;
-  while (axis->slave_link_.coupled) {
-    if (!up.push(axis->slave_link_.factor, axis->slave_link_.offset)) return false;
-    axis = port.axes[axis->slave_link_.master].get();
+  while (true) {
     const KinematicState& base = axis->base_;
     const KinematicState& set = axis->set_;
     if (set.p != base.p || set.v != base.v) {
       const double c = base.v != 0.0 ? (set.v - base.v) / base.v : 0.0;
       if (!up.push(1.0 + c, (set.p - base.p) - c * base.p)) return false;
     }
+    if (!axis->slave_link_.coupled) break;
+    if (!up.push(axis->slave_link_.factor, axis->slave_link_.offset)) return false;
+    axis = port.axes[axis->slave_link_.master].get();
   }
   // The head's plan is what goes on: without a PTP job there is none to copy (an absolute
   // external generator, a compensation moving a held axis).
@@ -130,8 +131,11 @@ ErrorCode ServoAxis::gear_out(const plc::Command& command, CouplingPort& port) n
   const Limits own{scale * head->job_.user_velocity(), config_.acceleration, config_.deceleration,
                    config_.jerk};
   const uint32_t override_value = job_.override_value();
+  // The slave's own compensation is a level of the chain now: it never completes.
+  fold_superpositions(CommandState::kAborted);
   job_ = head->job_;
   job_.follow(chain, 0, own, override_value);
+  base_ = set_;
   if (job_.kind() == JobKind::kEmergencyStop) job_.set_kind(JobKind::kHalt);  // no error here
   target_ = job_.kind() == JobKind::kVelocity ? set_.p : job_.target();
   return ErrorCode::kNone;

@@ -33,15 +33,26 @@ void ServoAxis::phase_commands(CouplingPort& port) noexcept {
 
 void ServoAxis::phase_set_values(AxisSnapshot& snapshot,
                                  std::span<const AxisSnapshot> snapshots) noexcept {
-  generate_set_values(snapshots);
   if (slave_link_.coupled) {
-    // Seed 000 §3.2.2: slave target velocity = coupling factor × master target velocity.
+    // Seed 000 §3.2.2: slave target velocity = coupling factor × master target velocity; the
+    // target position likewise (a compensation on the slave moves it on, seed 000 §3.2.4).
     const AxisSnapshot& master = snapshots[slave_link_.master];
-    target_ = slave_link_.factor * master.target_position + slave_link_.offset;
-    slave_target_velocity_ = slave_link_.factor * master.target_velocity;
+    slave_path_ = BasicPath{master.path_running,
+                            master.path_stopping,
+                            master.path_positioning,
+                            master.path_has_target,
+                            slave_link_.factor * master.target_position + slave_link_.offset,
+                            slave_link_.factor * master.target_velocity};
+    target_ = slave_path_.target;
   }
+  generate_set_values(snapshots);
+  const BasicPath path = basic_path();
   snapshot.target_position = target_;
-  snapshot.target_velocity = target_velocity();
+  snapshot.target_velocity = path.target_velocity;
+  snapshot.path_running = path.running;
+  snapshot.path_stopping = path.stopping;
+  snapshot.path_positioning = path.positioning;
+  snapshot.path_has_target = path.has_target;
   snapshot.set_position = set_.p;
   snapshot.set_velocity = set_.v;
   snapshot.set_acceleration = set_.a;
@@ -104,8 +115,14 @@ void ServoAxis::generate_set_values(std::span<const AxisSnapshot> snapshots) noe
   if (!channel_.controller_enabled()) {
     set_jerk_ = 0.0;            // no generation: control_and_drive() makes the set position follow
     end_external_generation();  // seed 000 §2.6: the controller enable's edge switches it off
-    // A coupled slave follows again from where it stands when the enable returns.
-    slave_link_.retake_offset = slave_link_.coupled;
+    // A coupled slave follows again from where it stands when the enable returns; its
+    // compensation ends with the enable (the offset taken anew includes what it did).
+    if (slave_link_.coupled) {
+      slave_link_.retake_offset = true;
+      if (stack_.compensation().running() || stack_.held() != 0.0) {
+        fold_superpositions(CommandState::kAborted);
+      }
+    }
     return;
   }
   bool not_finite = false;
@@ -143,11 +160,12 @@ void ServoAxis::generate_set_values(std::span<const AxisSnapshot> snapshots) noe
       set_jerk_ = 0.0;
       break;
   }
+  const BasicPath path = basic_path();
   SuperpositionStack::Basic basic;
   basic.state = base_;
-  basic.path_running = job_.active() && !job_.generation_ended();
-  basic.has_target = job_.active() && job_.kind() != JobKind::kVelocity;
-  basic.target = job_.target();
+  basic.path_running = path.running;
+  basic.has_target = path.has_target;
+  basic.target = path.target;
   const SuperpositionStack::Result r =
       stack_.superimpose(basic, channel_.ref().PlcToNc, channel_, cycle_time_);
   set_ = r.set;
@@ -160,6 +178,20 @@ void ServoAxis::generate_set_values(std::span<const AxisSnapshot> snapshots) noe
   if (not_finite || r.not_finite) raise_error(ErrorCode::kParameterNotFinite);
   // A finite packet out of range (external_setpoint.hpp) is not taken either: 0x4359.
   if (too_large || r.too_large) raise_error(ErrorCode::kSetVelocityNotAllowed);
+}
+
+BasicPath ServoAxis::basic_path() const noexcept {
+  if (slave_link_.coupled) return slave_path_;
+  const JobKind kind = job_.kind();
+  BasicPath path;
+  path.running = job_.active() && !job_.generation_ended();
+  path.stopping =
+      kind == JobKind::kHalt || kind == JobKind::kStop || kind == JobKind::kEmergencyStop;
+  path.positioning = kind == JobKind::kPosition;
+  path.has_target = job_.active() && kind != JobKind::kVelocity;
+  path.target = job_.target();
+  path.target_velocity = job_.active() ? job_.target_velocity() : 0.0;
+  return path;
 }
 
 SetValueSource ServoAxis::source() const noexcept {
