@@ -74,7 +74,7 @@ inline double override_factor(uint32_t override_value) noexcept {
 
 // The affine levels between a head job's table and a decoupled slave, applied head first.
 struct DecouplingChain {
-  static constexpr std::size_t kMaxLevels = 16;
+  static constexpr std::size_t kMaxLevels = 8;
   struct Level {
     double factor = 1.0;
     double offset = 0.0;
