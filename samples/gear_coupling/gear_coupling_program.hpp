@@ -200,14 +200,14 @@ struct Velocities {
 struct Report {
   bool finished = false;
   uint32_t error_id = 0;
-  uint32_t axis_errors = 0;      // or-ed NcToPlc.ErrorCode of the three axes
-  Velocities at_override_30;     // at the end of each phase
+  uint32_t axis_errors = 0;   // or-ed NcToPlc.ErrorCode of the three axes
+  Velocities at_override_30;  // at the end of each phase
   Velocities at_override_100;
   Velocities after_factor_change;
   Velocities after_decoupling;
   Velocities after_slave_stop;
   uint32_t slave1_couple_state_after_decoupling = 99;
-  long cascade_mismatches = 0;  // cycles where Slave2.SetPos != -0.5 × Slave1.SetPos
+  long cascade_mismatches = 0;    // cycles where Slave2.SetPos != -0.5 × Slave1.SetPos
   long following_mismatches = 0;  // coupled cycles where Slave1.SetPos != factor × master
   double final_pos[3] = {0.0, 0.0, 0.0};
   double end_time = 0.0;
