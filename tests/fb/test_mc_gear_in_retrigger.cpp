@@ -14,15 +14,20 @@
 
 namespace {
 
-struct Plc {
+// Master 0 and slave 1 of a rig, the slave's MC_GearIn and the master's MC_MoveAbsolute, both
+// called once per PLC cycle before the NC cycle.
+class GearPlc {
+ public:
   gr::Rig rig{2};
-  plc::AXIS_REF& master = rig.at(0);
-  plc::AXIS_REF& slave = rig.at(1);
   fb::MC_GearIn gear;
   fb::MC_MoveAbsolute move;
+
+  plc::AXIS_REF& master() { return rig.at(0); }
+  plc::AXIS_REF& slave() { return rig.at(1); }
+  void call_gear() { gear(master(), slave()); }
   void tick() {
-    gear(master, slave);
-    move(master);
+    call_gear();
+    move(master());
     rig.kernel.cycle();
   }
 };
@@ -31,7 +36,7 @@ struct Plc {
 
 TEST_CASE("MC_GearIn re-triggered while InGear changes the factor -0.7 -> -0.8 at once",
           "[fb][gear]") {
-  Plc p;
+  GearPlc p;
   p.gear.Execute = true;
   p.gear.RatioNumerator = -0.7;
   p.tick();
@@ -43,8 +48,8 @@ TEST_CASE("MC_GearIn re-triggered while InGear changes the factor -0.7 -> -0.8 a
   p.move.Velocity = 2000.0;
   for (int i = 0; i < 600; ++i)
     p.tick();
-  REQUIRE(p.master.NcToPlc.SetVelo == 2000.0);
-  CHECK(p.slave.NcToPlc.SetVelo == -0.7 * 2000.0);
+  REQUIRE(p.master().NcToPlc.SetVelo == 2000.0);
+  CHECK(p.slave().NcToPlc.SetVelo == -0.7 * 2000.0);
 
   p.gear.Execute = false;
   p.tick();
@@ -53,58 +58,58 @@ TEST_CASE("MC_GearIn re-triggered while InGear changes the factor -0.7 -> -0.8 a
 
   p.gear.Execute = true;
   p.gear.RatioNumerator = -0.8;
-  const double before = p.slave.NcToPlc.SetPos;
-  p.gear(p.master, p.slave);  // the rising edge posts the new command
+  const double before = p.slave().NcToPlc.SetPos;
+  p.call_gear();  // the rising edge posts the new command
   CHECK(p.gear.command_number() != first);
   CHECK(p.gear.Busy);
   CHECK_FALSE(p.gear.InGear);
   CHECK_FALSE(p.gear.CommandAborted);
-  p.move(p.master);
+  p.move(p.master());
   p.rig.kernel.cycle();
-  p.gear(p.master, p.slave);
+  p.call_gear();
   CHECK(p.gear.InGear);
   CHECK(p.gear.Active);
   CHECK_FALSE(p.gear.CommandAborted);
   CHECK_FALSE(p.gear.Error);
-  CHECK(p.slave.NcToPlc.GearRatio == -0.8);
-  CHECK(p.slave.NcToPlc.SetVelo == -0.8 * p.master.NcToPlc.SetVelo);
+  CHECK(p.slave().NcToPlc.GearRatio == -0.8);
+  CHECK(p.slave().NcToPlc.SetVelo == -0.8 * p.master().NcToPlc.SetVelo);
   // Position continuous: one cycle's travel at the new velocity, no jump.
-  CHECK(std::abs(p.slave.NcToPlc.SetPos - before) <= 0.8 * 2000.0 * 0.001 * (1.0 + 1e-12));
-  const double offset = p.slave.NcToPlc.SetPos + 0.8 * p.master.NcToPlc.SetPos;
+  CHECK(std::abs(p.slave().NcToPlc.SetPos - before) <= 0.8 * 2000.0 * 0.001 * (1.0 + 1e-12));
+  const double offset = p.slave().NcToPlc.SetPos + 0.8 * p.master().NcToPlc.SetPos;
   while (!p.move.Done)
     p.tick();
-  CHECK(p.master.NcToPlc.SetPos == 2000.0);
-  CHECK(p.slave.NcToPlc.SetPos == Approx(-0.8 * 2000.0 + offset).epsilon(1e-14));
+  CHECK(p.master().NcToPlc.SetPos == 2000.0);
+  CHECK(p.slave().NcToPlc.SetPos == Approx(-0.8 * 2000.0 + offset).epsilon(1e-14));
   CHECK(p.gear.InGear);
 }
 
 TEST_CASE("a re-trigger refused by the block leaves the coupling; no re-trigger before InGear",
           "[fb][gear]") {
-  Plc p;
+  GearPlc p;
   p.gear.Execute = true;
   p.gear.RatioNumerator = 0.5;
-  p.gear(p.master, p.slave);  // posted, not yet taken
+  p.call_gear();  // posted, not yet taken
   p.gear.Execute = false;
-  p.gear(p.master, p.slave);
+  p.call_gear();
   p.gear.Execute = true;
   p.gear.RatioNumerator = 2.0;
   const uint16_t first = p.gear.command_number();
-  p.gear(p.master, p.slave);  // Busy, not InGear: the rising edge starts nothing
+  p.call_gear();  // Busy, not InGear: the rising edge starts nothing
   CHECK(p.gear.command_number() == first);
   p.rig.kernel.cycle();
-  p.gear(p.master, p.slave);
+  p.call_gear();
   REQUIRE(p.gear.InGear);
-  CHECK(p.slave.NcToPlc.GearRatio == 0.5);
+  CHECK(p.slave().NcToPlc.GearRatio == 0.5);
 
   p.gear.Execute = false;
-  p.gear(p.master, p.slave);
+  p.call_gear();
   p.gear.Execute = true;
   p.gear.RatioDenominator = 0;
-  p.gear(p.master, p.slave);
+  p.call_gear();
   CHECK(p.gear.Error);
   CHECK(p.gear.ErrorID == 0x4B06U);
   CHECK_FALSE(p.gear.InGear);
   p.rig.kernel.cycle();
-  CHECK(p.slave.NcToPlc.GearRatio == 0.5);
-  CHECK(p.slave.NcToPlc.CoupleState == 3U);
+  CHECK(p.slave().NcToPlc.GearRatio == 0.5);
+  CHECK(p.slave().NcToPlc.CoupleState == 3U);
 }

@@ -42,9 +42,25 @@ void run_to_end(gr::Rig& rig) {
   rig.cycles(10);
 }
 
+// After a decoupling during a compensation the former slave runs the head's plan times `scale`:
+// runs it until it stands, checking every cycle against the seed axis's limits times `scale`
+// (V `velocity`).
+void run_scaled_plan_to_rest(gr::Rig& rig, double velocity, double scale) {
+  kt::LimitChecker checker = kt::LimitChecker::seed(velocity * (1.0 + 1e-9));
+  checker.acceleration = 5000.0 * scale;
+  checker.deceleration = checker.acceleration;
+  checker.jerk = 50000.0 * scale;
+  for (int i = 0; i < 20000 && !(rig.at(1).NcToPlc.SetVelo == 0.0 && i > 10); ++i) {
+    rig.kernel.cycle();
+    checker.check(rig.at(1));
+  }
+  INFO(checker.first);
+  CHECK(checker.ok());
+}
+
 }  // namespace
 
-TEST_CASE("slave compensation, seed figure 'making up fully': from -500 with D 500 ends at 10000",
+TEST_CASE("slave compensation, seed figure 'making up fully'': from -500 with D 500 ends at 10000",
           "[gear][compensation]") {
   gr::Rig rig(2);
   start(rig, -500.0);
@@ -150,16 +166,7 @@ TEST_CASE("decoupling during a slave's compensation keeps its velocity; it never
   const double p0 = rig.at(1).NcToPlc.SetPos;
   const double m0 = rig.at(0).NcToPlc.SetPos;
   rig.post(0, kt::simple(plc::CommandType::kStop));  // the former master's stop does not reach it
-  kt::LimitChecker checker = kt::LimitChecker::seed(v_before * (1.0 + 1e-9));
-  checker.acceleration = 5000.0 * scale;  // the head's plan times 1 + c
-  checker.deceleration = checker.acceleration;
-  checker.jerk = 50000.0 * scale;
-  for (int i = 0; i < 20000 && !(rig.at(1).NcToPlc.SetVelo == 0.0 && i > 10); ++i) {
-    rig.kernel.cycle();
-    checker.check(rig.at(1));
-  }
-  INFO(checker.first);
-  CHECK(checker.ok());
+  run_scaled_plan_to_rest(rig, v_before, scale);     // the head's plan times 1 + c
   // The head's remaining way 10000 - m0, scaled by 1 + c: D is never "completed".
   CHECK(rig.at(1).NcToPlc.SetPos == Approx(p0 + (10000.0 - m0) * scale).epsilon(1e-9));
   CHECK(std::abs(rig.at(1).NcToPlc.SetPos - 10000.0) > 1.0);
@@ -202,16 +209,7 @@ TEST_CASE("decoupling during the master's compensation keeps the slave's velocit
   REQUIRE(rig.decouple(1).state == CommandState::kDone);
   CHECK(rig.at(1).NcToPlc.SetVelo == Approx(v_before).epsilon(1e-12));
   const double scale = v_before / 1000.0;  // 0.5 × (1 + c)
-  kt::LimitChecker checker = kt::LimitChecker::seed(v_before * (1.0 + 1e-9));
-  checker.acceleration = 5000.0 * scale;
-  checker.deceleration = checker.acceleration;
-  checker.jerk = 50000.0 * scale;
-  for (int i = 0; i < 20000 && !(rig.at(1).NcToPlc.SetVelo == 0.0 && i > 10); ++i) {
-    rig.kernel.cycle();
-    checker.check(rig.at(1));
-  }
-  INFO(checker.first);
-  CHECK(checker.ok());
+  run_scaled_plan_to_rest(rig, v_before, scale);
   CHECK(rig.at(1).NcToPlc.SetVelo == 0.0);
   // The master's own compensation goes on and completes there.
   rig.cycles(100);

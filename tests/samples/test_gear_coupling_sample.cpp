@@ -6,7 +6,7 @@
 // at every cycle, everything at rest at the end with no error; CSV + one well-formed SVG.
 #include <filesystem>
 #include <fstream>
-#include <sstream>
+#include <iterator>
 #include <string>
 
 #include <catch2/catch.hpp>
@@ -16,11 +16,9 @@
 
 namespace {
 
-std::string read_file(const std::filesystem::path& path) {
+std::string contents(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 }  // namespace
@@ -60,10 +58,10 @@ TEST_CASE("the gear coupling sample writes one CSV and one well-formed SVG with 
   REQUIRE(sample.run().finished);
   const auto [csv, svg] = sample.write(dir);
   CHECK(csv.filename() == "gear_coupling.csv");
-  const std::string text = read_file(csv);
+  const std::string text = contents(csv);
   for (const char* column : {"Master.SetPos [mm]", "Slave1.SetVelo [mm/s]", "Slave2.CoupleState"})
     CHECK(text.find(column) != std::string::npos);
-  const std::string plot = read_file(svg);
+  const std::string plot = contents(svg);
   CHECK(ncsdk_test::xml_problem(plot).empty());
   for (const char* id : {"panel-position", "panel-velocity", "panel-couple-state"})
     CHECK(plot.find(std::string("id=\"") + id + "\"") != std::string::npos);

@@ -3,8 +3,8 @@
 // counter per_axis_cycle: the time of one Kernel::cycle divided by the number of axes, in
 // seconds, printed with an SI prefix ("45n" = 45 ns).
 //
-// Every master moves back and forth between 0 and 300 + i mm at 1500 mm/s (as in
-// bench_kernel_cycle); in the pairs each odd axis follows the even one before it with factor
+// Every master moves back and forth between 0 and 300 + i mm at 1500 mm/s (back_and_forth.hpp,
+// as in bench_kernel_cycle); in the pairs each odd axis follows the even one before it with factor
 // 0.75, coupled at rest before the measurement.
 //
 // Run: cmake -DNCSDK_BUILD_BENCHMARKS=ON … && ./build/tools/benchmarks/bench_gear_cycle
@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "back_and_forth.hpp"
 #include "nc_core/kernel.hpp"
 
 namespace {
@@ -47,20 +48,10 @@ void run(benchmark::State& state, bool pairs) {
     }
     kernel.cycle();
   }
-  std::vector<uint16_t> numbers(n, 0);
-  std::vector<bool> forward(n, true);
+  bench::BackAndForth motion(n);
   for (auto _ : state) {
     for (std::size_t i = 0; i < n; ++i) {
-      if (!moves[i]) continue;
-      plc::AXIS_REF& a = *axes[i];
-      if (numbers[i] == 0 || a.Mailbox.answer(numbers[i]).state == plc::CommandState::kDone) {
-        plc::Command c;
-        c.type = plc::CommandType::kMoveAbsolute;
-        c.position = forward[i] ? 300.0 + static_cast<double>(i) : 0.0;
-        c.velocity = 1500.0;
-        numbers[i] = a.Mailbox.post(c);
-        forward[i] = !forward[i];
-      }
+      if (moves[i]) motion.step(*axes[i], i);
     }
     kernel.cycle();
   }
