@@ -202,3 +202,33 @@ TEST_CASE("decoupling at override 0 is offline: the slave holds as a PTP master"
   CHECK(rig.at(1).NcToPlc.SetPos == p);
   CHECK(rig.at(0).NcToPlc.SetVelo > 0.0);
 }
+
+TEST_CASE(
+    "online decoupling is refused (0x424D) when the head runs no PTP job; nothing changes on any "
+    "axis",
+    "[gear][decouple][refusal]") {
+  // The master moves by absolute external setpoints (seed 000 §2.6): there is no plan to go on
+  // with. The slave follows it; MC_GearOut goes to the probe only.
+  gr::TwinRigs t(3, {});
+  t.both(1, gr::gear_in(0, 0.5));
+  t.cycles(1);
+  t.both(0, kt::ext_enable(1000.0, 1));  // after the coupling: a master at rest couples
+  t.cycles(1);
+  for (int i = 1; i <= 200; ++i) {
+    const double p = 1.0 * i;  // 1000 mm/s
+    kt::feed(t.probe.at(0), p, 1000.0, 0.0, 1);
+    kt::feed(t.reference.at(0), p, 1000.0, 0.0, 1);
+    t.cycles(1);
+  }
+  REQUIRE(t.probe.at(1).NcToPlc.SetVelo == 500.0);
+  REQUIRE(t.same());
+  const uint16_t n = t.probe.post(1, gr::gear_out());
+  kt::feed(t.probe.at(0), 201.0, 1000.0, 0.0, 1);
+  kt::feed(t.reference.at(0), 201.0, 1000.0, 0.0, 1);
+  t.cycles(1);
+  const plc::CommandAnswer a = t.probe.answer(1, n);
+  CHECK(a.state == CommandState::kError);
+  CHECK(a.error_code == kt::id(plc::ErrorCode::kDecouplingNotAllowed));
+  CHECK(t.probe.at(1).NcToPlc.CoupleState == 3U);
+  CHECK(t.same());
+}
