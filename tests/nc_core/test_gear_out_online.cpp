@@ -232,3 +232,25 @@ TEST_CASE(
   CHECK(t.probe.at(1).NcToPlc.CoupleState == 3U);
   CHECK(t.same());
 }
+
+TEST_CASE("after online decoupling MC_Halt brakes with its own dynamics when both are larger",
+          "[gear][decouple]") {
+  gr::Rig rig(2);
+  start_seed_figure(rig, 1.0);
+  REQUIRE(rig.decouple(1).state == CommandState::kDone);
+  const nc::KinematicState from{rig.at(1).NcToPlc.SetPos, rig.at(1).NcToPlc.SetVelo,
+                                rig.at(1).NcToPlc.SetAcc};
+  // D 10000, J 100000: both above the axis's 5000 / 50000, so adopted (seed 000 §2.2).
+  const double expected_end = nc::plan_stop(from, 10000.0, 100000.0).final_state().p;
+  const uint16_t halt = rig.post(1, kt::simple(plc::CommandType::kHalt, 10000.0, 100000.0));
+  int cycles = 0;
+  while (rig.answer(1, halt).state != CommandState::kDone && cycles < 5000) {
+    rig.kernel.cycle();
+    ++cycles;
+  }
+  REQUIRE(rig.answer(1, halt).state == CommandState::kDone);
+  CHECK(rig.at(1).NcToPlc.SetPos == expected_end);
+  CHECK(cycles == Approx(1000.0 * (2000.0 / 10000.0 + 0.1)).margin(2.0));
+  CHECK(rig.at(0).NcToPlc.SetVelo == 2000.0);  // the former master runs on
+  CHECK_FALSE(kt::bit(rig.at(1), plc::kStateMotionCommandsLocked));
+}
