@@ -10,6 +10,9 @@ bool ExecuteBlock::begin_call(bool execute) noexcept {
   // A result is always shown in the call that reaches it, so here it has been shown: it stays
   // only while Execute stays high (a new rising edge also clears it and starts again).
   if (phase_ == Phase::kResult && (!execute || rising)) phase_ = Phase::kIdle;
+  if (rising && phase_ == Phase::kBusy && reached_ && retrigger_ == Retrigger::kWhileReached) {
+    return true;
+  }
   return rising && phase_ == Phase::kIdle;
 }
 
@@ -25,6 +28,7 @@ void ExecuteBlock::start(plc::AXIS_REF& axis, const Start& start) noexcept {
   }
   number_ = number;
   phase_ = Phase::kBusy;
+  reached_ = false;
 }
 
 void ExecuteBlock::finish(Outcome outcome, uint32_t error_id) noexcept {
@@ -35,8 +39,10 @@ void ExecuteBlock::finish(Outcome outcome, uint32_t error_id) noexcept {
 
 ExecuteOutputs ExecuteBlock::end_call(const plc::AXIS_REF& axis) noexcept {
   ExecuteOutputs out;
+  reached_ = false;
   if (phase_ == Phase::kBusy) {
     const plc::CommandAnswer answer = axis.Mailbox.answer(number_);
+    reached_ = answer.state == plc::CommandState::kReached;
     switch (answer.state) {
       case plc::CommandState::kPosted:
         out.busy = true;

@@ -1,17 +1,11 @@
 #include "fb/mc_gear_out.hpp"
 
+#include "fb/detail/plain_command.hpp"
+
 namespace fb {
 
 void MC_GearOut::operator()(plc::AXIS_REF& slave) noexcept {
-  const detail::ExecuteOutputs out = block_(Execute, slave, []() noexcept {
-    detail::Start start;
-    start.command.type = plc::CommandType::kGearOut;
-    return start;
-  });
-  Done = out.done;
-  Busy = out.busy;
-  Error = out.error;
-  ErrorID = out.error_id;
+  detail::run_plain_command(*this, block_, slave, plc::CommandType::kGearOut);
 }
 
 }  // namespace fb

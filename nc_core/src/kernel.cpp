@@ -105,6 +105,25 @@ void Kernel::cycle() noexcept {
   cycles_ = counter;
 }
 
+void Kernel::react_in_groups() noexcept {
+  // SPEC C7, INSTANTANEOUS (seed 000 §3.1): an error raised in this cycle on any axis of a
+  // master/slave group reaches every axis of the group in the same cycle, with the faulty axis's
+  // code. Errors are rare: the scan over the group's axes runs only for an axis with a new one.
+  const std::size_t n = axes_.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!snapshots_[i].error_event) continue;
+    const std::size_t group = couplings_.group(i);
+    const plc::ErrorCode code = snapshots_[i].error;
+    for (std::size_t j = 0; j < n; ++j) {
+      if (j == i || couplings_.group(j) != group) continue;
+      if (snapshots_[j].error != plc::ErrorCode::kNone) continue;
+      axes_[j]->group_error(code);
+      snapshots_[j].error = code;
+      snapshots_[j].error_event = true;
+    }
+  }
+}
+
 void Kernel::run_phases(std::size_t first, std::size_t last, uint64_t counter) noexcept {
   const std::span<const uint32_t> order = couplings_.order();
   // (a) commands: mailbox, enables, override and the online functions ran in cycle().
@@ -122,6 +141,7 @@ void Kernel::run_phases(std::size_t first, std::size_t last, uint64_t counter) n
   // (e) monitors and error handling, then the group reactions (no groups without couplings).
   for (std::size_t i = first; i < last; ++i)
     axes_[i]->phase_monitors(snapshots_[i]);
+  if (couplings_.has_couplings()) react_in_groups();
   // (f) publish.
   for (std::size_t i = first; i < last; ++i)
     axes_[i]->phase_publish(counter);

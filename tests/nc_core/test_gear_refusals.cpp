@@ -78,8 +78,8 @@ TEST_CASE("refused couplings change nothing and carry their codes", "[gear][refu
 }
 
 TEST_CASE(
-    "a coupled slave refuses starts, stops, new positions, compensation and external "
-    "setpoints with 0x424E",
+    "a coupled slave refuses starts, stops, new positions and external setpoints with 0x424E, "
+    "and a compensation while its master stands",
     "[gear][refusal]") {
   using E = plc::ErrorCode;
   using T = plc::CommandType;
@@ -93,8 +93,8 @@ TEST_CASE(
       {"Stop", 6, kt::simple(T::kStop), E::kFunctionNotAllowed},
       {"NewPos", 4, kt::new_pos(100.0), E::kFunctionNotAllowed},
       {"NewPosAndVelo", 4, kt::new_pos_and_velo(100.0, 500.0, 50.0), E::kFunctionNotAllowed},
-      {"MoveSuperImposed", 6, kt::move_superimposed(10.0, 100.0, 500.0, 500.0, 1000.0, 500.0),
-       E::kFunctionNotAllowed},
+      {"MoveSuperImposed, master at rest", 6,
+       kt::move_superimposed(10.0, 100.0, 500.0, 500.0, 1000.0, 500.0), E::kFunctionNotAllowed},
       {"ExtSetPointGenEnable", 4, kt::ext_enable(0.0, 1), E::kFunctionNotAllowed},
   };
   for (const Case& c : cases)

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "back_and_forth.hpp"
 #include "fb/fb.hpp"
 #include "nc_core/kernel.hpp"
 
@@ -41,25 +42,14 @@ void BM_KernelCycle(benchmark::State& state) {
   const auto n = static_cast<std::size_t>(state.range(0));
   nc::Kernel kernel;
   std::vector<plc::AXIS_REF*> axes;
-  std::vector<uint16_t> numbers(n, 0);
-  std::vector<bool> forward(n, true);
+  bench::BackAndForth moves(n);
   for (std::size_t i = 0; i < n; ++i) {
     axes.push_back(&kernel.add_axis(bench_axis(i)));
     enable(*axes.back());
   }
   for (auto _ : state) {
-    for (std::size_t i = 0; i < n; ++i) {
-      plc::AXIS_REF& a = *axes[i];
-      const plc::CommandState s = a.Mailbox.answer(numbers[i]).state;
-      if (numbers[i] == 0 || s == plc::CommandState::kDone) {
-        plc::Command c;
-        c.type = plc::CommandType::kMoveAbsolute;
-        c.position = forward[i] ? 300.0 + static_cast<double>(i) : 0.0;
-        c.velocity = 1500.0;
-        numbers[i] = a.Mailbox.post(c);
-        forward[i] = !forward[i];
-      }
-    }
+    for (std::size_t i = 0; i < n; ++i)
+      moves.step(*axes[i], i);
     kernel.cycle();
   }
   state.counters["axes"] = static_cast<double>(n);

@@ -5,10 +5,12 @@
 // mailbox with the master's NcToPlc.AxisIndex. InGear (and Busy, Active) from the cycle the NC
 // coupled the axes on, for as long as they stay coupled; MC_GearOut ends the coupling (the block
 // is then no longer Busy, with no result shown). Another MC_GearIn for the same slave takes over
-// (this one: CommandAborted). RatioDenominator 0 is refused here (0x4B06), BufferMode other than
-// MC_Aborting too (0x4F03); the NC refuses the rest (factor 0, NaN, axes not at rest, loops...:
-// docs/behaviour.md "Slave axes"). Acceleration, Deceleration and Jerk are not used by a linear
-// coupling (kept for the Tc2_MC2 interface).
+// (this one: CommandAborted); so does this one after its Execute fell and rose again while
+// InGear (the documented exception to "a rising edge while Busy starts nothing"): a new command
+// with the new ratio, InGear again once the NC has taken it (the next NC cycle). RatioDenominator 0
+// is refused here (0x4B06), BufferMode other than MC_Aborting too (0x4F03); the NC refuses the rest
+// (factor 0, NaN, axes not at rest, loops...: docs/behaviour.md "Slave axes"). Acceleration,
+// Deceleration and Jerk are not used by a linear coupling (kept for the Tc2_MC2 interface).
 #pragma once
 
 #include <cstdint>
@@ -44,7 +46,7 @@ class MC_GearIn {
   uint16_t command_number() const noexcept { return block_.command_number(); }
 
  private:
-  detail::ExecuteBlock block_;
+  detail::ExecuteBlock block_{detail::ExecuteBlock::Retrigger::kWhileReached};
 };
 
 }  // namespace fb

@@ -1,9 +1,9 @@
 // MC_GearOut: decouples a linear slave from its master (SPEC C4, seed 000 §3.2.3).
 //
 // Execute-type block (rules in fb/detail/execute_block.hpp). At rest the slave becomes a PTP
-// master holding its set position: Done in the cycle the NC's answer arrives (the next NC cycle),
-// NcToPlc.CoupleState 0 then. Decoupling in motion is not there yet: refused with 0x424D, as is
-// an axis that is not a coupled slave.
+// master holding its set position; in motion a master that goes on as it would have as a slave
+// (online decoupling). Done in the cycle the NC's answer arrives (the next NC cycle),
+// NcToPlc.CoupleState 0 then. An axis that is not a coupled slave: 0x424D.
 #pragma once
 
 #include <cstdint>

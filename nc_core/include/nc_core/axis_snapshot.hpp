@@ -17,6 +17,13 @@ struct AxisSnapshot {
   double set_velocity = 0.0;
   double set_acceleration = 0.0;
   double set_jerk = 0.0;
+  double target_position = 0.0;  // NcToPlc.TargetPos / TargetVelo of this cycle (a slave: its
+  double target_velocity = 0.0;  // master's, transformed by factor and offset)
+  // The basic path the axis's superpositions ride on (its job, or a slave's master's path):
+  bool path_running = false;      // its set-value generation runs
+  bool path_stopping = false;     // it is a halt, stop or error ramp
+  bool path_positioning = false;  // it is a positioning (target_position is its end)
+  bool path_has_target = false;   // it ends at target_position (positioning or stop)
   double actual_position = 0.0;
   double actual_velocity = 0.0;
   double actual_acceleration = 0.0;

@@ -95,6 +95,8 @@ class Kernel {
   detail::ServoAxis& find(std::string_view name) const;
   // Phases (a) … (f) over axes [first, last) of the set-value order.
   void run_phases(std::size_t first, std::size_t last, uint64_t counter) noexcept;
+  // Phase (e), with couplings: an axis's new error reaches its whole group (SPEC C7).
+  void react_in_groups() noexcept;
 
   KernelConfig config_;
   std::vector<std::unique_ptr<detail::ServoAxis>> axes_;

@@ -1,4 +1,4 @@
-// MC_GearIn / MC_GearOut on the slave (SPEC C1, C3, C4 at rest; seed 000 §3.2.2-3.2.3): the
+// MC_GearIn / MC_GearOut on the slave (SPEC C1, C3, C4; seed 000 §3.2.2-3.2.3): the
 // checks, the graph update in the commands phase, and what a coupled slave refuses. The codes
 // and the order of the checks are in docs/behaviour.md "Slave axes".
 #include <cmath>
@@ -25,7 +25,6 @@ bool ServoAxis::refused_while_coupled(CommandType type) noexcept {
     case CommandType::kStop:
     case CommandType::kNewPos:
     case CommandType::kNewPosAndVelo:
-    case CommandType::kMoveSuperImposed:
     case CommandType::kExtSetPointGenEnable:
     case CommandType::kGearInDyn:
     case CommandType::kHome:
@@ -49,7 +48,8 @@ ErrorCode ServoAxis::gear_in(const plc::Command& command, CouplingPort& port) no
     // slave's position continuous (SPEC C2). Another master needs MC_GearOut first.
     if (master_index != slave_link_.master) return ErrorCode::kFunctionNotAllowed;
     channel_.take_over(command.number, slave_link_.command);  // the former instance: kAborted
-    slave_link_.couple(master_index, command.number, command.ratio, set_.p, master.set_.p);
+    // From the basic set position: a compensation of the slave (C5) goes on on top of it.
+    slave_link_.couple(master_index, command.number, command.ratio, base_.p, master.set_.p);
     channel_.answer_current(CommandState::kReached);
     return ErrorCode::kNone;
   }
@@ -72,20 +72,72 @@ ErrorCode ServoAxis::gear_in(const plc::Command& command, CouplingPort& port) no
   return ErrorCode::kNone;
 }
 
+bool ServoAxis::decoupling_chain(CouplingPort& port, DecouplingChain& chain,
+                                 const ServoAxis*& head) const noexcept {
+  // From this slave up to the head of its cascade: each slave link, and each master's own
+  // superposition (a held offset, a compensation) as the level set = (1 + c)·base + e, c the
+  // compensation's share of the velocity at decoupling (seed 000 §3.2.4 note 5: its velocity is
+  // kept, it never completes). Collected slave first, applied head first.
+  DecouplingChain up;
+  const ServoAxis* axis = this;
+  while (true) {
+    const KinematicState& base = axis->base_;
+    const KinematicState& set = axis->set_;
+    if (set.p != base.p || set.v != base.v) {
+      const double c = base.v != 0.0 ? (set.v - base.v) / base.v : 0.0;
+      if (!up.push(1.0 + c, (set.p - base.p) - c * base.p)) return false;
+    }
+    if (!axis->slave_link_.coupled) break;
+    if (!up.push(axis->slave_link_.factor, axis->slave_link_.offset)) return false;
+    axis = port.axes[axis->slave_link_.master].get();
+  }
+  // The head's plan is what goes on: without a PTP job there is none to copy (an absolute
+  // external generator, a compensation moving a held axis).
+  if (!axis->job_.active() || axis->source() != SetValueSource::kPtpJob) return false;
+  if (axis->job_.chain_depth() + up.count > DecouplingChain::kMaxLevels) return false;
+  chain.count = 0;
+  for (std::size_t i = up.count; i-- > 0;)
+    (void)chain.push(up.levels[i].factor, up.levels[i].offset);
+  head = axis;
+  return true;
+}
+
 ErrorCode ServoAxis::gear_out(const plc::Command& command, CouplingPort& port) noexcept {
   if (!slave_link_.coupled) return ErrorCode::kDecouplingNotAllowed;
-  // Online decoupling (SPEC C4 in motion) is not there yet: only a slave at rest decouples.
-  if (set_.v != 0.0 || set_.a != 0.0) return ErrorCode::kDecouplingNotAllowed;
+  // Online when the slave moves (its master's velocity is not 0); at override 0 or at rest it
+  // decouples offline (seed 000 §3.2.3).
+  const bool online = set_.v != 0.0 || set_.a != 0.0;
+  DecouplingChain chain;
+  const ServoAxis* head = nullptr;
+  if (online && !decoupling_chain(port, chain, head)) return ErrorCode::kDecouplingNotAllowed;
   port.graph.decouple(index_);
   ServoAxis& master = *port.axes[slave_link_.master];
   --master.slave_count_;
   slave_link_.coupled = false;
-  // The slave becomes a PTP master holding its set position; the coupling command has ended.
+  // The coupling command has ended.
   if (channel_.runs(slave_link_.command)) channel_.answer_current(CommandState::kDone);
-  base_ = KinematicState{set_.p, 0.0, 0.0};
-  target_ = set_.p;
   monitors_.reset_windows();
   channel_.answer(command.number, CommandState::kDone);
+  if (!online) {
+    // The slave becomes a PTP master holding its set position.
+    base_ = KinematicState{set_.p, 0.0, 0.0};
+    target_ = set_.p;
+    return ErrorCode::kNone;
+  }
+  // The slave becomes a master that goes on with the head's plan as it stands now, transformed:
+  // override 100 % = |last factor| × the head's target velocity; what comes next (stop, new end
+  // position, override) uses the axis's own dynamics. The job has no command number of its own.
+  const double scale = std::abs(chain.total_factor());
+  const Limits own{scale * head->job_.user_velocity(), config_.acceleration, config_.deceleration,
+                   config_.jerk};
+  const uint32_t override_value = job_.override_value();
+  // The slave's own compensation is a level of the chain now: it never completes.
+  fold_superpositions(CommandState::kAborted);
+  job_ = head->job_;
+  job_.follow(chain, 0, own, override_value);
+  base_ = set_;
+  if (job_.kind() == JobKind::kEmergencyStop) job_.set_kind(JobKind::kHalt);  // no error here
+  target_ = job_.kind() == JobKind::kVelocity ? set_.p : job_.target();
   return ErrorCode::kNone;
 }
 

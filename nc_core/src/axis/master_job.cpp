@@ -108,6 +108,7 @@ void MasterJob::start(JobKind kind, uint16_t number, const Profile& profile, dou
 
 void MasterJob::install(const Profile& profile, bool final) noexcept {
   profile_ = profile;
+  chain_.count = 0;
   k_ = 0;
   ended_ = false;
   reached_ = false;
@@ -116,6 +117,32 @@ void MasterJob::install(const Profile& profile, bool final) noexcept {
   state_ = profile.start_state();
   has_brake_phase_ = final && kind_ == JobKind::kPosition;
   brake_start_ = has_brake_phase_ ? brake_start(profile) : 0.0;
+}
+
+void MasterJob::follow(const DecouplingChain& chain, uint16_t number, const Limits& limits,
+                       uint32_t override_value) noexcept {
+  const double f = chain.total_factor();
+  const double scale = std::abs(f);
+  number_ = number;
+  target_ = chain.position(target_);
+  target_velocity_ = chain.velocity(target_velocity_);
+  reduced_velocity_ *= scale;
+  direction_ = f < 0.0 ? -direction_ : direction_;
+  limits_ = limits;
+  if (activation_.armed) {
+    activation_.position = chain.position(activation_.position);
+    activation_.direction = f < 0.0 ? -activation_.direction : activation_.direction;
+    activation_.velocity *= scale;
+  }
+  override_ = override_value;
+  handled_override_ = override_value;
+  state_ = chain.state(state_);
+  jerk_ *= f;
+  // The chain of this job comes first (a former master that was itself decoupled online).
+  DecouplingChain joined = chain_;
+  for (std::size_t i = 0; i < chain.count; ++i)
+    (void)joined.push(chain.levels[i].factor, chain.levels[i].offset);
+  chain_ = joined;
 }
 
 void MasterJob::replan(const Profile& profile, bool final) noexcept {
@@ -156,7 +183,7 @@ bool MasterJob::in_brake_phase(double cycle_time) const noexcept {
 KinematicState MasterJob::advance(double cycle_time) noexcept {
   if (ended_) {
     jerk_ = 0.0;
-    state_ = profile_.final_state();
+    state_ = chain_.state(profile_.final_state());
     return state_;
   }
   ++k_;
@@ -167,19 +194,19 @@ KinematicState MasterJob::advance(double cycle_time) noexcept {
     // The hold goes on past the end of the profile: at() extrapolates it. A hold at 0 (override
     // 0) is not "reached": InVelocity means moving at the commanded level.
     if (at_end) reached_ = profile_.final_state().v != 0.0;
-    jerk_ = at_end ? 0.0 : profile_.jerk_at(t);
-    state_ = profile_.at(t);
+    jerk_ = at_end ? 0.0 : chain_.velocity(profile_.jerk_at(t));
+    state_ = chain_.state(profile_.at(t));
     return state_;
   }
   if (at_end) {
     // A rest for override 0 holds its end but does not end the job.
     ended_ = final_;
     jerk_ = 0.0;
-    state_ = profile_.final_state();
+    state_ = chain_.state(profile_.final_state());
     return state_;
   }
-  jerk_ = profile_.jerk_at(t);
-  state_ = profile_.at(t);
+  jerk_ = chain_.velocity(profile_.jerk_at(t));
+  state_ = chain_.state(profile_.at(t));
   return state_;
 }
 

@@ -20,9 +20,15 @@
 // Stop planned in the brake phase is marked as braking too (mark_brake_phase()), so that no later
 // stop sharpens it (seed 000 §2.2: no emergency stop in the brake phase).
 //
+// Online decoupling (SPEC C4, seed 000 §3.2.3): the former slave takes a copy of the job at the
+// head of its cascade and runs it through a chain of affine levels (p = f·p + o, v = f·v,
+// a = f·a), the same arithmetic its slave links did, so it goes on bit for bit as it would have
+// as a slave; the first replan (override, stop, new end position) drops the chain.
+//
 // Cycle functions only: noexcept, no allocation.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 #include "nc_core/profile.hpp"
@@ -66,6 +72,47 @@ inline double override_factor(uint32_t override_value) noexcept {
   return static_cast<double>(override_value) / static_cast<double>(plc::kOverrideFull);
 }
 
+// The affine levels between a head job's table and a decoupled slave, applied head first.
+struct DecouplingChain {
+  static constexpr std::size_t kMaxLevels = 8;
+  struct Level {
+    double factor = 1.0;
+    double offset = 0.0;
+  };
+  Level levels[kMaxLevels];
+  std::size_t count = 0;
+
+  // False when full (a cascade deeper than kMaxLevels / 2 axes).
+  bool push(double factor, double offset) noexcept {
+    if (count == kMaxLevels) return false;
+    levels[count++] = Level{factor, offset};
+    return true;
+  }
+  double total_factor() const noexcept {
+    double f = 1.0;
+    for (std::size_t i = 0; i < count; ++i)
+      f *= levels[i].factor;
+    return f;
+  }
+  double position(double p) const noexcept {
+    for (std::size_t i = 0; i < count; ++i)
+      p = levels[i].factor * p + levels[i].offset;
+    return p;
+  }
+  KinematicState state(KinematicState s) const noexcept {
+    for (std::size_t i = 0; i < count; ++i) {
+      s = KinematicState{levels[i].factor * s.p + levels[i].offset, levels[i].factor * s.v,
+                         levels[i].factor * s.a};
+    }
+    return s;
+  }
+  double velocity(double v) const noexcept {
+    for (std::size_t i = 0; i < count; ++i)
+      v = levels[i].factor * v;
+    return v;
+  }
+};
+
 class MasterJob {
  public:
   // Takes over a planned profile; the previous job is forgotten. The online data start from
@@ -77,6 +124,12 @@ class MasterJob {
   // A new table for the running job, planned from state(). `final`: it ends at the job's goal
   // (false: a rest for override 0).
   void replan(const Profile& profile, bool final) noexcept;
+  // Online decoupling: this job (a copy of the head's) goes on through `chain`. Number, target,
+  // levels, direction and a pending activation are transformed; `limits` (the velocity already
+  // |total factor| × the head's) replaces the limits; `override_value` is the axis's own and
+  // counts as handled (the table goes on unchanged).
+  void follow(const DecouplingChain& chain, uint16_t number, const Limits& limits,
+              uint32_t override_value) noexcept;
   // The whole running table counts as brake phase (a Halt / Stop planned in one).
   void mark_brake_phase() noexcept;
 
@@ -87,6 +140,7 @@ class MasterJob {
   KinematicState state() const noexcept { return state_; }
 
   JobKind kind() const noexcept { return kind_; }
+  void set_kind(JobKind kind) noexcept { kind_ = kind; }
   bool active() const noexcept { return kind_ != JobKind::kNone; }
   bool is_motion() const noexcept {
     return kind_ == JobKind::kPosition || kind_ == JobKind::kVelocity;
@@ -105,6 +159,8 @@ class MasterJob {
   double target_velocity() const noexcept { return target_velocity_; }
   const Limits& limits() const noexcept { return limits_; }
   uint64_t cycles() const noexcept { return k_; }
+  // Levels of the online-decoupling chain in force (0: the table is the axis's own).
+  std::size_t chain_depth() const noexcept { return chain_.count; }
 
   void set_target(double target) noexcept { target_ = target; }
   void set_target_velocity(double velocity) noexcept { target_velocity_ = velocity; }
@@ -147,6 +203,7 @@ class MasterJob {
   uint32_t override_ = plc::kOverrideFull;
   uint32_t handled_override_ = plc::kOverrideFull;
   Activation activation_{};
+  DecouplingChain chain_{};  // empty except after an online decoupling, until the first replan
 };
 
 }  // namespace nc::detail

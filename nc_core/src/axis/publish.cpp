@@ -37,7 +37,7 @@ void ServoAxis::phase_publish(uint64_t cycle_counter) noexcept {
   out.ModuloActPos = modulo(actual, config_.modulo_factor);
   out.ModuloSetPos = modulo(command.p, config_.modulo_factor);
   out.TargetPos = target_;
-  out.TargetVelo = job_.active() ? job_.target_velocity() : 0.0;
+  out.TargetVelo = target_velocity();
   out.CompensationDistance = stack_.compensation().done();  // travel-relative, as D
   out.CompensationLength = stack_.compensation().length();
   out.CompensationVelocityDiff = stack_.compensation().velocity_diff();

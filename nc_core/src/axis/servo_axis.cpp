@@ -33,7 +33,26 @@ void ServoAxis::phase_commands(CouplingPort& port) noexcept {
 
 void ServoAxis::phase_set_values(AxisSnapshot& snapshot,
                                  std::span<const AxisSnapshot> snapshots) noexcept {
+  if (slave_link_.coupled) {
+    // Seed 000 §3.2.2: slave target velocity = coupling factor × master target velocity; the
+    // target position likewise (a compensation on the slave moves it on, seed 000 §3.2.4).
+    const AxisSnapshot& master = snapshots[slave_link_.master];
+    slave_path_ = BasicPath{master.path_running,
+                            master.path_stopping,
+                            master.path_positioning,
+                            master.path_has_target,
+                            slave_link_.factor * master.target_position + slave_link_.offset,
+                            slave_link_.factor * master.target_velocity};
+    target_ = slave_path_.target;
+  }
   generate_set_values(snapshots);
+  const BasicPath path = basic_path();
+  snapshot.target_position = target_;
+  snapshot.target_velocity = path.target_velocity;
+  snapshot.path_running = path.running;
+  snapshot.path_stopping = path.stopping;
+  snapshot.path_positioning = path.positioning;
+  snapshot.path_has_target = path.has_target;
   snapshot.set_position = set_.p;
   snapshot.set_velocity = set_.v;
   snapshot.set_acceleration = set_.a;
@@ -80,8 +99,9 @@ void ServoAxis::check_enables() noexcept {
     return;
   }
   // Feed enable removed in the direction of travel: the axis stops on its error ramp (also when
-  // external setpoints move it).
-  if ((job_.is_motion() || stack_.external().enabled()) && !channel_.has_error()) {
+  // external setpoints move it; a coupled slave's error stops its group, see Kernel).
+  if ((job_.is_motion() || stack_.external().enabled() || slave_link_.coupled) &&
+      !channel_.has_error()) {
     if (set_.v > 0.0 && !channel_.feed_enabled(1.0)) {
       raise_error(ErrorCode::kFeedEnablePlusMissing);
     } else if (set_.v < 0.0 && !channel_.feed_enabled(-1.0)) {
@@ -95,8 +115,14 @@ void ServoAxis::generate_set_values(std::span<const AxisSnapshot> snapshots) noe
   if (!channel_.controller_enabled()) {
     set_jerk_ = 0.0;            // no generation: control_and_drive() makes the set position follow
     end_external_generation();  // seed 000 §2.6: the controller enable's edge switches it off
-    // A coupled slave follows again from where it stands when the enable returns.
-    slave_link_.retake_offset = slave_link_.coupled;
+    // A coupled slave follows again from where it stands when the enable returns; its
+    // compensation ends with the enable (the offset taken anew includes what it did).
+    if (slave_link_.coupled) {
+      slave_link_.retake_offset = true;
+      if (stack_.compensation().running() || stack_.held() != 0.0) {
+        fold_superpositions(CommandState::kAborted);
+      }
+    }
     return;
   }
   bool not_finite = false;
@@ -134,11 +160,12 @@ void ServoAxis::generate_set_values(std::span<const AxisSnapshot> snapshots) noe
       set_jerk_ = 0.0;
       break;
   }
+  const BasicPath path = basic_path();
   SuperpositionStack::Basic basic;
   basic.state = base_;
-  basic.path_running = job_.active() && !job_.generation_ended();
-  basic.has_target = job_.active() && job_.kind() != JobKind::kVelocity;
-  basic.target = job_.target();
+  basic.path_running = path.running;
+  basic.has_target = path.has_target;
+  basic.target = path.target;
   const SuperpositionStack::Result r =
       stack_.superimpose(basic, channel_.ref().PlcToNc, channel_, cycle_time_);
   set_ = r.set;
@@ -151,6 +178,20 @@ void ServoAxis::generate_set_values(std::span<const AxisSnapshot> snapshots) noe
   if (not_finite || r.not_finite) raise_error(ErrorCode::kParameterNotFinite);
   // A finite packet out of range (external_setpoint.hpp) is not taken either: 0x4359.
   if (too_large || r.too_large) raise_error(ErrorCode::kSetVelocityNotAllowed);
+}
+
+BasicPath ServoAxis::basic_path() const noexcept {
+  if (slave_link_.coupled) return slave_path_;
+  const JobKind kind = job_.kind();
+  BasicPath path;
+  path.running = job_.active() && !job_.generation_ended();
+  path.stopping =
+      kind == JobKind::kHalt || kind == JobKind::kStop || kind == JobKind::kEmergencyStop;
+  path.positioning = kind == JobKind::kPosition;
+  path.has_target = job_.active() && kind != JobKind::kVelocity;
+  path.target = job_.target();
+  path.target_velocity = job_.active() ? job_.target_velocity() : 0.0;
+  return path;
 }
 
 SetValueSource ServoAxis::source() const noexcept {
@@ -193,7 +234,8 @@ void ServoAxis::run_monitors() noexcept {
   }
   // Software limits during motion: the set position passes an enabled limit while it moves
   // outward. Moving back in from outside (seed 000 §2.1 note 5) is not an error.
-  if (!channel_.has_error() && job_.active() && job_.kind() != JobKind::kEmergencyStop) {
+  const bool moving_on_its_own = job_.active() && job_.kind() != JobKind::kEmergencyStop;
+  if (!channel_.has_error() && (moving_on_its_own || slave_link_.coupled)) {
     if (set_.v > 0.0 && monitors_.above_max(set_.p)) {
       raise_error(ErrorCode::kSoftLimitMaxDuringMotion);
     } else if (set_.v < 0.0 && monitors_.below_min(set_.p)) {
@@ -264,6 +306,10 @@ void ServoAxis::raise_error(ErrorCode code) noexcept {
   job_.start(JobKind::kEmergencyStop, 0, scratch_, scratch_.final_state().p, 0.0, limits);
   target_ = scratch_.final_state().p;
   monitors_.reset_windows();
+}
+
+void ServoAxis::group_error(ErrorCode code) noexcept {
+  raise_error(code);
 }
 
 void ServoAxis::reset_error() noexcept {

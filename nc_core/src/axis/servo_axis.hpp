@@ -33,6 +33,18 @@ namespace nc::detail {
 
 class ServoAxis;
 
+// The basic motion an axis's superpositions ride on (seed 000 §2.5, §3.2.4): the axis's own job,
+// or, for a coupled slave, its master's path as the master's snapshot shows it (a slave's
+// compensation ends with its master's path, and its remaining length is to its TargetPos).
+struct BasicPath {
+  bool running = false;
+  bool stopping = false;
+  bool positioning = false;
+  bool has_target = false;
+  double target = 0.0;
+  double target_velocity = 0.0;
+};
+
 // What the commands phase of one axis may reach of the others (MC_GearIn / MC_GearOut): the
 // kernel's axes by index and its coupling graph. The kernel builds it for each cycle.
 struct CouplingPort {
@@ -62,6 +74,10 @@ class ServoAxis {
   void phase_drive(AxisSnapshot& snapshot) noexcept;     // (d)
   void phase_monitors(AxisSnapshot& snapshot) noexcept;  // (e)
   void phase_publish(uint64_t cycle_counter) noexcept;   // (f)
+  // (e), after every axis's monitors: the group reaction (SPEC C7 INSTANTANEOUS) reaches this
+  // axis with the faulty axis's code; the first error stays. A slave goes on following (its
+  // head master's emergency ramp brings it down); a master stops on its emergency ramp.
+  void group_error(ErrorCode code) noexcept;
 
  private:
   // --- commands.cpp ---
@@ -136,14 +152,18 @@ class ServoAxis {
   // superpositions on top.
   void install_table(double target, bool final, double level) noexcept;
 
-  // --- coupling.cpp (C1, C3, C4 at rest; seed 000 §3.2.2-3.2.3) ---
+  // --- coupling.cpp (C1, C3, C4; seed 000 §3.2.2-3.2.3) ---
   ErrorCode gear_in(const plc::Command& command, CouplingPort& port) noexcept;
   ErrorCode gear_out(const plc::Command& command, CouplingPort& port) noexcept;
+  // Online decoupling: the levels from the head of this slave's cascade down to it, and the
+  // head. False (0x424D) when the head runs no PTP job or the cascade is too deep.
+  bool decoupling_chain(CouplingPort& port, DecouplingChain& chain,
+                        const ServoAxis*& head) const noexcept;
   // At rest for a coupling: no job, set velocity and acceleration 0, no compensation running,
   // no external generation enabled (seed 000 §3.2.2 "both axes are stationary").
   bool at_rest_for_coupling() const noexcept;
-  // A coupled slave refuses this command (0x424E): starts, stops, new positions, compensation
-  // (until C5) and external setpoint generation.
+  // A coupled slave refuses this command (0x424E): starts, stops, new positions and external
+  // setpoint generation (compensation is allowed: C5).
   static bool refused_while_coupled(plc::CommandType type) noexcept;
 
   // --- modulo.cpp (B1 modulo start, seed 000 §2.1) ---
@@ -188,6 +208,10 @@ class ServoAxis {
   SuperpositionStack stack_{};
   SlaveLink slave_link_{};
   uint32_t slave_count_ = 0;  // axes coupled to this one as their master
+  BasicPath slave_path_{};    // while coupled: the master's path of this cycle, transformed
+  // The axis's own job's path, or slave_path_ while coupled.
+  BasicPath basic_path() const noexcept;
+  double target_velocity() const noexcept { return basic_path().target_velocity; }
   double set_jerk_ = 0.0;
   double previous_set_position_ = 0.0;
   double previous_measured_ = 0.0;

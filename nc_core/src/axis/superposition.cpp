@@ -25,7 +25,9 @@ ErrorCode ServoAxis::start_compensation(const plc::Command& command) noexcept {
   if (config_.kind == AxisKind::kEncoder) return ErrorCode::kAxisKindNotAllowed;
   if (channel_.has_error()) return ErrorCode::kAxisInErrorState;
   if (stack_.compensation().running()) return ErrorCode::kCompensationActive;  // no iteration
-  if (is_stop(job_.kind())) return ErrorCode::kStopAlreadyActive;
+  // The basic motion: the axis's job, or a coupled slave's master's path (seed 000 §3.2.4).
+  const BasicPath path = basic_path();
+  if (path.stopping) return ErrorCode::kStopAlreadyActive;
   if (locked_) return ErrorCode::kMotionCommandsLocked;
   const ErrorCode parameters =
       Compensation::check(command.position, command.length, command.process_velocity,
@@ -33,19 +35,16 @@ ErrorCode ServoAxis::start_compensation(const plc::Command& command) noexcept {
   if (parameters != ErrorCode::kNone) return parameters;
   // A compensation superimposes a running basic motion; none beside external generation.
   if (stack_.external().enabled()) return ErrorCode::kFunctionNotAllowed;
-  if (!job_.is_motion() || job_.generation_ended()) return ErrorCode::kFunctionNotAllowed;
+  if (!path.running) return ErrorCode::kFunctionNotAllowed;
 
   // The direction of travel, to which D refers.
   double direction = base_.v;
-  if (direction == 0.0) {
-    direction =
-        job_.kind() == JobKind::kPosition ? job_.target() - base_.p : job_.target_velocity();
-  }
+  if (direction == 0.0) direction = path.positioning ? path.target - base_.p : path.target_velocity;
   direction = direction < 0.0 ? -1.0 : 1.0;
   // Seed 000 §2.5 note 5: the remaining distance replaces a longer L.
   double length = command.length;
-  if (job_.kind() == JobKind::kPosition) {
-    const double remaining = std::abs(job_.target() - base_.p);
+  if (path.positioning) {
+    const double remaining = std::abs(path.target - base_.p);
     if (!(remaining > 0.0)) return ErrorCode::kFunctionNotAllowed;
     length = std::fmin(length, remaining);
   }
@@ -55,9 +54,9 @@ ErrorCode ServoAxis::start_compensation(const plc::Command& command) noexcept {
       command.number, command.position, length, command.process_velocity, command.velocity,
       command.acceleration, command.deceleration, direction, std::abs(base_.v), cycle_time_);
   if (planned != ErrorCode::kNone) return planned;
-  if (job_.kind() == JobKind::kPosition) {
+  if (path.positioning) {
     // Seed 000 §2.1 notes 4, 5: the compensated end must lie inside the software limits too.
-    const double end = job_.target() + stack_.held() + planned_compensation.planned_offset();
+    const double end = path.target + stack_.held() + planned_compensation.planned_offset();
     if (monitors_.below_min(end) || monitors_.above_max(end)) {
       return ErrorCode::kTargetPositionNotAllowed;
     }

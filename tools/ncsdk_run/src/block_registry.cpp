@@ -101,6 +101,8 @@ struct ExtSetPointGenFeed {
 using fb::MC_AbortSuperposition;
 using fb::MC_ExtSetPointGenDisable;
 using fb::MC_ExtSetPointGenEnable;
+using fb::MC_GearIn;
+using fb::MC_GearOut;
 using fb::MC_Halt;
 using fb::MC_MoveAbsolute;
 using fb::MC_MoveModulo;
@@ -193,6 +195,21 @@ constexpr auto kExtSetPointGenDisable =
     join(std::array<Port, 1>{NCSDK_IN(MC_ExtSetPointGenDisable, Execute)},
          status_outputs<MC_ExtSetPointGenDisable>(),
          std::array<Port, 1>{NCSDK_OUT(MC_ExtSetPointGenDisable, Enabled)});
+constexpr auto kGearIn = std::array<Port, 13>{NCSDK_IN(MC_GearIn, Execute),
+                                              NCSDK_IN(MC_GearIn, RatioNumerator),
+                                              NCSDK_IN(MC_GearIn, RatioDenominator),
+                                              NCSDK_IN(MC_GearIn, Acceleration),
+                                              NCSDK_IN(MC_GearIn, Deceleration),
+                                              NCSDK_IN(MC_GearIn, Jerk),
+                                              NCSDK_IN(MC_GearIn, BufferMode),
+                                              NCSDK_OUT(MC_GearIn, InGear),
+                                              NCSDK_OUT(MC_GearIn, Busy),
+                                              NCSDK_OUT(MC_GearIn, Active),
+                                              NCSDK_OUT(MC_GearIn, CommandAborted),
+                                              NCSDK_OUT(MC_GearIn, Error),
+                                              NCSDK_OUT(MC_GearIn, ErrorID)};
+constexpr auto kGearOut =
+    join(std::array<Port, 1>{NCSDK_IN(MC_GearOut, Execute)}, status_outputs<MC_GearOut>());
 constexpr auto kExtSetPointGenFeed = std::array<Port, 5>{
     NCSDK_IN(ExtSetPointGenFeed, Position), NCSDK_IN(ExtSetPointGenFeed, Velocity),
     NCSDK_IN(ExtSetPointGenFeed, Acceleration), NCSDK_IN(ExtSetPointGenFeed, Direction),
@@ -242,12 +259,11 @@ std::unique_ptr<Block> make() {
   return std::make_unique<Holder<B>>();
 }
 
-// The axes a block is called with. The coupling blocks, when fb has them, are listed with
-// kMasterSlave (MC_GearIn, MC_GearInDyn) and kSlave (MC_GearOut); Holder calls a two-axis block
-// with (master, slave).
+// The axes a block is called with: the coupling blocks with kMasterSlave (MC_GearIn; MC_GearInDyn
+// when fb has it) and kSlave (MC_GearOut); Holder calls a two-axis block with (master, slave).
 constexpr std::string_view kOneAxis[] = {"axis"};
-[[maybe_unused]] constexpr std::string_view kMasterSlave[] = {"master", "slave"};
-[[maybe_unused]] constexpr std::string_view kSlave[] = {"slave"};
+constexpr std::string_view kMasterSlave[] = {"master", "slave"};
+constexpr std::string_view kSlave[] = {"slave"};
 
 const BlockType kTypes[] = {
     {"MC_Power", kPower, kOneAxis, &make<MC_Power>},
@@ -266,6 +282,8 @@ const BlockType kTypes[] = {
     {"MC_ExtSetPointGenEnable", kExtSetPointGenEnable, kOneAxis, &make<MC_ExtSetPointGenEnable>},
     {"MC_ExtSetPointGenDisable", kExtSetPointGenDisable, kOneAxis, &make<MC_ExtSetPointGenDisable>},
     {"MC_ExtSetPointGenFeed", kExtSetPointGenFeed, kOneAxis, &make<ExtSetPointGenFeed>},
+    {"MC_GearIn", kGearIn, kMasterSlave, &make<MC_GearIn>},
+    {"MC_GearOut", kGearOut, kSlave, &make<MC_GearOut>},
     {"MC_ReadStatus", kReadStatus, kOneAxis, &make<MC_ReadStatus>},
     {"MC_ReadActualPosition", kReadActualPosition, kOneAxis, &make<MC_ReadActualPosition>},
     {"MC_ReadAxisError", kReadAxisError, kOneAxis, &make<MC_ReadAxisError>},

@@ -10,6 +10,9 @@
 //    and CommandAborted; Active only while the axis executes this block's command number;
 //  - a result (Done, Error, CommandAborted) stays while Execute stays high; a result reached
 //    after Execute fell is shown for exactly one call; then the outputs reset.
+// One documented exception, opted into by MC_GearIn (issue 9): with kRetriggerWhileReached a
+// rising edge while the NC answers kReached (InGear) posts a new command, whose outcome the block
+// follows from then on (the factor change of SPEC C2 by the same instance).
 // Cycle functions only: no allocation, no exceptions, no I/O.
 #pragma once
 
@@ -45,6 +48,11 @@ struct ExecuteOutputs {
 
 class ExecuteBlock {
  public:
+  enum class Retrigger : uint8_t { kNever, kWhileReached };
+
+  ExecuteBlock() = default;
+  explicit ExecuteBlock(Retrigger retrigger) noexcept : retrigger_(retrigger) {}
+
   // Runs the rules once. `make_start` is called (at most once) only when a command starts.
   template <class MakeStart>
   ExecuteOutputs operator()(bool execute, plc::AXIS_REF& axis, MakeStart&& make_start) noexcept {
@@ -71,6 +79,8 @@ class ExecuteBlock {
   bool previous_execute_ = false;
   uint16_t number_ = 0;
   uint32_t error_id_ = 0;
+  Retrigger retrigger_ = Retrigger::kNever;
+  bool reached_ = false;  // the last answer followed was kReached
 };
 
 // The command of a move-type block (positions, dynamics, buffer mode); 0 dynamics = axis default.
