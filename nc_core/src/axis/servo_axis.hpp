@@ -58,7 +58,15 @@ class ServoAxis {
   // set values phase (d) controls to this cycle (NcToPlc.SetPos; without a call they are the
   // program's set values), and `stop` != kNone raises that axis error (program on its emergency
   // ramp). The windows and software limits stay in program coordinates (actual − (d − q)).
-  void phase_drive_command(const KinematicState& drive, ErrorCode stop) noexcept;
+  // `role`: the axis's HLI part (a list in force: slave; a source of another axis's list:
+  // master), kept until the next call, for CoupleState and the refusal of external setpoints.
+  void phase_drive_command(const KinematicState& drive, ErrorCode stop,
+                           plc::CoupleState role) noexcept;
+  // What the HLI phase reads of the axis before phase (c): an axis error, the controller enable,
+  // external setpoint generation enabled.
+  bool has_error() const noexcept { return channel_.has_error(); }
+  bool controller_enabled() const noexcept { return channel_.controller_enabled(); }
+  bool external_enabled() const noexcept { return stack_.external().enabled(); }
   void phase_drive(AxisSnapshot& snapshot) noexcept;     // (d)
   void phase_monitors(AxisSnapshot& snapshot) noexcept;  // (e)
   void phase_publish(uint64_t cycle_counter) noexcept;   // (f)
@@ -182,6 +190,13 @@ class ServoAxis {
   double previous_drive_position_ = 0.0;
   double drive_offset_ = 0.0;
   bool drive_command_given_ = false;
+  plc::CoupleState hli_role_ = plc::CoupleState::kSingle;  // from phase (c), see there
+  bool hli_target() const noexcept {
+    return hli_role_ == plc::CoupleState::kSlave || hli_role_ == plc::CoupleState::kMasterAndSlave;
+  }
+  bool hli_source() const noexcept {
+    return hli_role_ == plc::CoupleState::kMaster || hli_role_ == plc::CoupleState::kMasterAndSlave;
+  }
   const KinematicState& drive_command() const noexcept {
     return drive_command_given_ ? drive_command_ : set_;
   }
