@@ -27,9 +27,11 @@ plc::hli::HLI_AX& HliPhase::add_axis(const AxisConfig& effective) {
   return unit;
 }
 
-double HliPhase::command_position_request(int ax_nr) const noexcept {
+double HliPhase::command_position_request(
+    int ax_nr, std::span<const std::unique_ptr<ServoAxis>> axes) const noexcept {
   const std::size_t axis = stage_.index_of(ax_nr);
   if (axis == hli::HliStage::kNoAxis) return std::numeric_limits<double>::quiet_NaN();
+  if (!engaged_) return axes[axis]->ref().NcToPlc.SetPos;
   return stage_.command_position_request(axis);
 }
 

@@ -38,8 +38,10 @@ class HliPhase {
   plc::hli::HLI_AX& add_axis(const AxisConfig& effective);
 
   std::span<plc::hli::HLI_AX* const> gpAx() const noexcept { return stage_.gpAx(); }
-  // D5; NaN for an unknown logical axis number.
-  double command_position_request(int ax_nr) const noexcept;
+  // D5; NaN for an unknown logical axis number. While the stage is idle its drive values are not
+  // kept up to date: every axis has d = q then, its published NcToPlc.SetPos.
+  double command_position_request(int ax_nr,
+                                  std::span<const std::unique_ptr<ServoAxis>> axes) const noexcept;
 
   // Cycle, before phase (a): whether phase (c) runs in this cycle (see above).
   bool begin_cycle() noexcept;
