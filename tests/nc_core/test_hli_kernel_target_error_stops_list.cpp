@@ -76,6 +76,27 @@ TEST_CASE("A following error on a DIRECT target switches its list off and brakes
   CHECK(rig.set_pos(1) == Approx(held + 100.0).margin(1e-9));
 }
 
+TEST_CASE("An error reset by the PLC in the very next tick still switches the list off",
+          "[hli][kernel]") {
+  nc::AxisConfig y2 = axis(8, "Y2");
+  y2.drive_max_velocity = 500.0;
+  Rig rig({axis(1, "X"), y2});
+  REQUIRE(rig.couple(1, {{1, h::HLI_AXIS_COUPLING_DIRECT, 0, 0}}));
+  rig.start_move(0, 900.0);
+  REQUIRE(ticks_until_error(rig, 1, 2000) >= 0);
+  REQUIRE(rig.error(1) == 0x4550);
+  // MC_Reset's edge: phase (a) clears the error before phase (c) runs; the list goes off all the
+  // same in that phase (c). (Phase (e) raises the following error again: the drive still lags.)
+  rig.reset[1].Execute = true;
+  rig.tick();
+  CHECK_FALSE(state_of(rig, 1).active_r);
+  rig.reset[1].Execute = false;
+  REQUIRE(rig.finish_move(0));
+  rig.ticks(1000);
+  CHECK(rig.set_pos(1) < 900.0 - 100.0);  // it did not follow axis 1 to 900 mm
+  CHECK(rig.axes[1]->NcToPlc.SetVelo == 0.0);
+}
+
 TEST_CASE("A feed-enable error of a target's own move stops its coupled drive too",
           "[hli][kernel]") {
   Rig rig({axis(1, "X"), axis(8, "Y2")});

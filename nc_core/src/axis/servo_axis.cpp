@@ -243,6 +243,7 @@ void ServoAxis::finish_job() noexcept {
 void ServoAxis::raise_error(ErrorCode code) noexcept {
   if (!channel_.raise(code)) return;  // the first error stays until reset
   error_event_ = true;
+  ++errors_raised_;
   has_been_stopped_ = true;
   if (job_.active() && channel_.runs(job_.number())) {
     channel_.answer_current(CommandState::kError, plc::to_id(code));

@@ -65,6 +65,9 @@ class ServoAxis {
   // What the HLI phase reads of the axis before phase (c): an axis error, the controller enable,
   // external setpoint generation enabled.
   bool has_error() const noexcept { return channel_.has_error(); }
+  // Counts the axis errors raised (wrapping): an error raised and reset between two phases (c)
+  // still shows as a change.
+  uint32_t errors_raised() const noexcept { return errors_raised_; }
   bool controller_enabled() const noexcept { return channel_.controller_enabled(); }
   bool external_enabled() const noexcept { return stack_.external().enabled(); }
   void phase_drive(AxisSnapshot& snapshot) noexcept;     // (d)
@@ -211,6 +214,7 @@ class ServoAxis {
   bool locked_ = false;  // MC_Stop: motion commands refused until kStopRelease
   bool has_been_stopped_ = false;
   bool error_event_ = false;  // an error was raised in this cycle
+  uint32_t errors_raised_ = 0;
 };
 
 }  // namespace nc::detail

@@ -16,6 +16,7 @@ plc::hli::HLI_AX& HliPhase::add_axis(const AxisConfig& effective) {
     v->reserve(n);
   for (std::vector<plc::ErrorCode>* v : {&stop_, &refusal_, &pending_})
     v->reserve(n);
+  errors_seen_.reserve(n);
   auto referenced = std::make_unique<bool[]>(n);
   std::fill(referenced.get(), referenced.get() + n, true);
   plc::hli::HLI_AX& unit = stage_.add_axis(hli::axis_setup(effective));  // throws before growing
@@ -23,6 +24,7 @@ plc::hli::HLI_AX& HliPhase::add_axis(const AxisConfig& effective) {
     v->push_back(0.0);
   for (std::vector<plc::ErrorCode>* v : {&stop_, &refusal_, &pending_})
     v->push_back(plc::ErrorCode::kNone);
+  errors_seen_.push_back(0);
   referenced_ = std::move(referenced);
   return unit;
 }
@@ -72,12 +74,17 @@ void HliPhase::run(std::span<const std::unique_ptr<ServoAxis>> axes,
     referenced_[i] = plc::test_bit(axes[i]->ref().NcToPlc.StateDWord, plc::kStateHomed);
     refusal_[i] = refusal(*axes[i]);
     pending_[i] = plc::ErrorCode::kNone;
-    // A target in axis error (raised in phases (a), (b) of this cycle or (e) of the last one)
-    // loses its list: its drive brakes from where it is instead of following its sources.
-    // Without its drive (controller enable off) the list goes off too, without a ramp to brake
-    // on; losing the enable while the drive moves is an axis error, as during a job.
+    // A target in axis error (raised in phases (a), (b) of this cycle or (e) of the last one,
+    // also one MC_Reset has cleared since) loses its list: its drive brakes from where it is
+    // instead of following its sources. Without its drive (controller enable off) the list goes
+    // off too, without a ramp to brake on; losing the enable while the drive moves is an axis
+    // error, as during a job. (A target was coupled at the last phase (c): errors_seen_ is
+    // that phase's count.)
+    const uint32_t raised = axes[i]->errors_raised();
+    const bool new_error = raised != errors_seen_[i];
+    errors_seen_[i] = raised;
     if (!stage_.coupled(i)) continue;
-    if (axes[i]->has_error()) {
+    if (axes[i]->has_error() || new_error) {
       stage_.stop(i);
     } else if (!axes[i]->controller_enabled()) {
       if (dv_[i] != 0.0) pending_[i] = plc::ErrorCode::kControllerEnableMissing;

@@ -61,6 +61,7 @@ class HliPhase {
   std::vector<plc::ErrorCode> stop_;
   std::vector<plc::ErrorCode> refusal_;
   std::vector<plc::ErrorCode> pending_;  // axis errors raised on the axis with this cycle's d
+  std::vector<uint32_t> errors_seen_;    // ServoAxis::errors_raised() at the last phase (c)
   bool engaged_ = false;
 };
 
