@@ -23,6 +23,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <span>
 #include <string>
 #include <utility>
@@ -214,6 +215,44 @@ inline nc::AxisConfig sample_axis(const char* name, int ax_nr) {
   return config;
 }
 
+// What each sample owns: a kernel with N axes (index 0 = X), the cycle driver with the scope
+// task and the PLC task (in that order, every NC cycle), the scope and PROGRAM MAIN.
+template <std::size_t N>
+class Bench {
+ public:
+  Bench(const Bench&) = delete;
+  Bench& operator=(const Bench&) = delete;
+
+  const nc::Scope& scope() const noexcept { return scope_; }
+  const nc::Kernel& kernel() const noexcept { return kernel_; }
+
+ protected:
+  explicit Bench(const Options& options)
+      : kernel_(nc::KernelConfig{options.nc_cycle}),
+        driver_(kernel_),
+        scope_(sample_common::scope_capacity(options)),
+        options_(options) {}
+  ~Bench() = default;
+
+  // Set-up, once the axes and the scope's channels are there.
+  void add_tasks(std::function<void()> sample, std::function<void()> plc) {
+    driver_.add_task("Scope", options_.nc_cycle, std::move(sample));
+    driver_.add_task("PlcTask", options_.nc_cycle, std::move(plc));
+  }
+  // Runs until MAIN finishes (then settles) or fails, or the timeout; true when it finished.
+  bool run_program() {
+    return sample_common::run_to_state(driver_, main_.state, State::STATE_FINISHED,
+                                       State::STATE_ERROR, options_.timeout, options_.settle_time);
+  }
+
+  nc::Kernel kernel_;
+  std::array<plc::AXIS_REF*, N> axes_{};
+  nc::CycleDriver driver_;
+  nc::Scope scope_;
+  Options options_;
+  Main<N> main_;
+};
+
 // ------------------------------------------------------------------------------------------
 // Examples 1–3.
 
@@ -244,31 +283,23 @@ inline bool example_ok(const Example& example, const ExampleReport& r) noexcept 
          std::fabs(r.final_y2 - example.expected_drive) <= 1e-9;
 }
 
-class ExampleSample {
+class ExampleSample : public Bench<2> {
  public:
   static constexpr std::size_t kX = 0;
   static constexpr std::size_t kY2 = 1;
 
   explicit ExampleSample(const Example& example, const Options& options = {})
-      : example_(example),
-        kernel_(nc::KernelConfig{options.nc_cycle}),
-        axes_{&kernel_.add_axis(sample_axis("X", 1)), &kernel_.add_axis(sample_axis("Y2", 8))},
-        driver_(kernel_),
-        scope_(sample_common::scope_capacity(options)),
-        options_(options) {
+      : Bench<2>(options), example_(example) {
+    axes_[kX] = &kernel_.add_axis(sample_axis("X", 1));
+    axes_[kY2] = &kernel_.add_axis(sample_axis("Y2", 8));
     scope_.add_motion_signals(*axes_[kX], "X");
     scope_.add_motion_signals(*axes_[kY2], "Y2");
     scope_.add_variable(&y2_active_rev_, "Y2.active_rev_r", "mm/s");
-    driver_.add_task("Scope", options.nc_cycle, [this] { sample(); });
-    driver_.add_task("PlcTask", options.nc_cycle, [this] { plc_cycle(); });
+    add_tasks([this] { sample(); }, [this] { plc_cycle(); });
   }
-  ExampleSample(const ExampleSample&) = delete;
-  ExampleSample& operator=(const ExampleSample&) = delete;
 
   const ExampleReport& run() {
-    report_.finished =
-        sample_common::run_to_state(driver_, main_.state, State::STATE_FINISHED, State::STATE_ERROR,
-                                    options_.timeout, options_.settle_time);
+    report_.finished = run_program();
     sample();
     report_.error_id = main_.error_id;
     report_.semaphore_cycles = main_.semaphore_cycles;
@@ -339,9 +370,6 @@ class ExampleSample {
     return out;
   }
 
-  const nc::Scope& scope() const noexcept { return scope_; }
-  const nc::Kernel& kernel() const noexcept { return kernel_; }
-
  private:
   void sample() noexcept {
     const int32_t rev = kernel_.gpAx()[kY2]->lr_state.active_rev_r;
@@ -398,12 +426,6 @@ class ExampleSample {
   }
 
   Example example_;
-  nc::Kernel kernel_;
-  std::array<plc::AXIS_REF*, 2> axes_;
-  nc::CycleDriver driver_;
-  nc::Scope scope_;
-  Options options_;
-  Main<2> main_;
   ExampleReport report_;
   double y2_active_rev_ = 0.0;  // mm/s, what the scope records of lr_state.active_rev_r
 };
@@ -451,15 +473,11 @@ inline bool mapping_ok(const MappingReport& r) noexcept {
   return std::fabs(r.final_x - (kX0 + kXMove)) <= 1e-9;
 }
 
-class MappingSample {
+class MappingSample : public Bench<4> {
  public:
   static constexpr const char* kName = "hli_forward_mapping";
 
-  explicit MappingSample(const Options& options = {})
-      : kernel_(nc::KernelConfig{options.nc_cycle}),
-        driver_(kernel_),
-        scope_(sample_common::scope_capacity(options)),
-        options_(options) {
+  explicit MappingSample(const Options& options = {}) : Bench<4>(options) {
     axes_[0] = &kernel_.add_axis(sample_axis("X", 1));
     for (std::size_t k = 0; k < 3; ++k) {
       nc::AxisConfig c = sample_axis(kMappings[k].name, kMappings[k].ax_nr);
@@ -472,16 +490,11 @@ class MappingSample {
       scope_.add_signal(*axes_[k + 1], kMappings[k].name, nc::Signal::kSetPos);
       scope_.add_variable(&request_[k], std::string(kMappings[k].name) + ".CMDPOS", "mm");
     }
-    driver_.add_task("Scope", options.nc_cycle, [this] { sample(); });
-    driver_.add_task("PlcTask", options.nc_cycle, [this] { plc_cycle(); });
+    add_tasks([this] { sample(); }, [this] { plc_cycle(); });
   }
-  MappingSample(const MappingSample&) = delete;
-  MappingSample& operator=(const MappingSample&) = delete;
 
   const MappingReport& run() {
-    report_.finished =
-        sample_common::run_to_state(driver_, main_.state, State::STATE_FINISHED, State::STATE_ERROR,
-                                    options_.timeout, options_.settle_time);
+    report_.finished = run_program();
     sample();
     report_.error_id = main_.error_id;
     for (const plc::AXIS_REF* a : axes_)
@@ -538,8 +551,6 @@ class MappingSample {
     }
     return out;
   }
-
-  const nc::Scope& scope() const noexcept { return scope_; }
 
  private:
   void sample() noexcept {
@@ -608,12 +619,6 @@ class MappingSample {
     });
   }
 
-  nc::Kernel kernel_;
-  std::array<plc::AXIS_REF*, 4> axes_{};
-  nc::CycleDriver driver_;
-  nc::Scope scope_;
-  Options options_;
-  Main<4> main_;
   MappingReport report_;
   std::array<double, 3> request_{};  // what the scope records of the requests
 };

@@ -5,15 +5,14 @@
 //   3  self + FRACT −5/9    → −5/9 · 900 + 100 = −400 mm (−500 mm before Y2's own move);
 // and P-AXIS-00460's forward-mapping example: X 40, X1 50, X1 coupled 1:1 to X and to itself →
 // request 50 (default), 50 (00436), 10 (00436 + 00460); after X +20: 70, 50, 10.
-#include <cstdlib>
+#include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include <catch2/catch.hpp>
 
 #include "../../samples/hli_coupling/hli_coupling_program.hpp"
+#include "text_file.hpp"
 #include "well_formed_xml.hpp"
 
 namespace {
@@ -23,12 +22,7 @@ using hli_coupling::ExampleSample;
 using hli_coupling::kExamples;
 using hli_coupling::MappingSample;
 
-std::string read_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using ncsdk_test::read_text;
 
 }  // namespace
 
@@ -120,16 +114,16 @@ TEST_CASE("the sample writes one CSV and one well-formed SVG per example", "[hli
     REQUIRE(sample.run().finished);
     const auto [csv, svg] = sample.write(dir);
     CHECK(csv.filename() == std::string(example.name) + ".csv");
-    CHECK(read_file(csv).find("Y2.active_rev_r [mm/s]") != std::string::npos);
-    const std::string plot = read_file(svg);
+    CHECK(read_text(csv).find("Y2.active_rev_r [mm/s]") != std::string::npos);
+    const std::string plot = read_text(svg);
     CHECK(ncsdk_test::xml_problem(plot).empty());
     CHECK(plot.find(example.title) != std::string::npos);
   }
   MappingSample mapping;
   REQUIRE(mapping.run().finished);
   const auto [csv, svg] = mapping.write(dir);
-  CHECK(read_file(csv).find("X1_436_460.CMDPOS [mm]") != std::string::npos);
-  const std::string plot = read_file(svg);
+  CHECK(read_text(csv).find("X1_436_460.CMDPOS [mm]") != std::string::npos);
+  const std::string plot = read_text(svg);
   CHECK(ncsdk_test::xml_problem(plot).empty());
   CHECK(plot.find("id=\"panel-request\"") != std::string::npos);
   std::filesystem::remove_all(dir);

@@ -53,8 +53,8 @@ struct Inputs {
   std::span<const double> program_acceleration;  // mm/s²
   std::span<const bool> referenced;              // homed: software limits are monitored (70195)
   // The kernel's reasons to refuse a new list on an axis (kNone: none), checked before the
-  // list itself: the axis is in error (0x4F06) or has external setpoint generation enabled
-  // (0x424E). Empty: no such reasons (the stage on its own).
+  // list itself: the axis is in error (0x4F06), has no controller enable (0x4223) or has
+  // external setpoint generation enabled (0x424E). Empty: no such reasons (the stage alone).
   std::span<const plc::ErrorCode> refusal = {};
 };
 
