@@ -101,12 +101,7 @@ TEST_CASE("A feed-enable error of a target's own move stops its coupled drive to
           "[hli][kernel]") {
   Rig rig({axis(1, "X"), axis(8, "Y2")});
   const double a = rig.kernel.config("Y2").emergency_deceleration;
-  // Example 2: DIRECT + self, both axes move.
-  REQUIRE(rig.couple(
-      1, {{1, h::HLI_AXIS_COUPLING_DIRECT, 0, 0}, {8, h::HLI_AXIS_COUPLING_DIRECT, 0, 0}}));
-  rig.start_move(0, 900.0);
-  rig.start_move(1, 100.0, 200.0);
-  rig.ticks(400);
+  REQUIRE(rig.run_example_2(100.0, 200.0, 400));  // DIRECT + self, both axes move
   REQUIRE(rig.axes[1]->NcToPlc.SetVelo > 1000.0);
   rig.power[1].Enable_Positive = false;  // raised in phase (a), seen by phase (c) at once
   rig.tick();
