@@ -83,7 +83,7 @@ std::span<plc::hli::HLI_AX* const> Kernel::gpAx() const noexcept {
   return hli_->gpAx();
 }
 double Kernel::command_position_request(int ax_nr) const noexcept {
-  return hli_->command_position_request(ax_nr);
+  return hli_->command_position_request(ax_nr, axes_);
 }
 
 void Kernel::cycle() noexcept {

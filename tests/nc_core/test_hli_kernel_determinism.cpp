@@ -1,7 +1,7 @@
 // Determinism and "a refused list disturbs nothing" on the real kernel: the same PLC program with
 // HLI lists in force run twice gives the same NC image bit for bit at every tick; and a run where
 // refused lists (70397, 70396, unknown ax_nr) are set while the axes move gives, bit for bit, the
-// image of the run without them.
+// image of the run without them; so does one where external setpoints on a target are refused.
 #include <catch2/catch.hpp>
 
 #include <bit>
@@ -87,6 +87,30 @@ TEST_CASE("Refused lists set while the axes move change nothing, bit for bit",
     if (n == 305) CHECK(rig.coupling[2].ErrorID == 70397);
     if (n == 605) CHECK(rig.coupling[0].ErrorID == 70396);
     if (n == 905) CHECK(rig.coupling[1].Error);
+  });
+  REQUIRE(plain.size() == refused.size());
+  for (std::size_t t = 0; t < plain.size(); ++t)
+    REQUIRE(plain[t] == refused[t]);
+}
+
+TEST_CASE("External setpoints refused on a coupled target change nothing, bit for bit",
+          "[hli][kernel][determinism]") {
+  const auto coupled = [](Rig& rig, int n) {
+    if (n == 0) {
+      set_list(rig, 2,
+               {{1, h::HLI_AXIS_COUPLING_DIRECT, 0, 0}, {8, h::HLI_AXIS_COUPLING_DIRECT, 0, 0}});
+    }
+    rig.coupling[2].Execute = n < 3;
+  };
+  const auto plain = run(coupled);
+  uint16_t absolute = 0;
+  uint16_t relative = 0;
+  const auto refused = run([&](Rig& rig, int n) {
+    coupled(rig, n);
+    if (n == 400) absolute = rig.axes[2]->Mailbox.post(kt::ext_enable(0.0, 1));
+    if (n == 1500) relative = rig.axes[2]->Mailbox.post(kt::ext_enable(0.0, 2));
+    if (n == 402) CHECK(rig.axes[2]->Mailbox.answer(absolute).error_code == 0x424E);
+    if (n == 1502) CHECK(rig.axes[2]->Mailbox.answer(relative).error_code == 0x424E);
   });
   REQUIRE(plain.size() == refused.size());
   for (std::size_t t = 0; t < plain.size(); ++t)

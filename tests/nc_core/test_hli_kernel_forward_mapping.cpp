@@ -42,3 +42,21 @@ TEST_CASE("Forward mapping through the kernel: 50 / 10, then 70 / 50 / 10", "[hl
   CHECK(std::isnan(plain.kernel.command_position_request(7)));
   CHECK(std::isnan(plain.kernel.command_position_request(0)));
 }
+
+TEST_CASE("The request gives the drive position while the stage is idle too", "[hli][kernel]") {
+  nc::AxisConfig x1 = axis(2, "X1");
+  x1.recalc_link_main_input_position = true;
+  Rig rig({axis(1, "X"), x1});
+  // Nothing ever coupled: phase (c) has not run, the request is each axis's drive position.
+  REQUIRE(rig.move_to(0, 40.0));
+  REQUIRE(rig.move_to(1, 50.0));
+  CHECK(rig.kernel.command_position_request(1) == Approx(40.0).margin(1e-9));
+  CHECK(rig.kernel.command_position_request(2) == Approx(50.0).margin(1e-9));
+  // Coupled to itself only and switched off again: d = q, the stage goes idle; later moves show.
+  REQUIRE(rig.couple(1, {{2, h::HLI_AXIS_COUPLING_DIRECT, 0, 0}}));
+  REQUIRE(rig.couple(1, {}));
+  REQUIRE(rig.move_to(0, 15.0));
+  REQUIRE(rig.move_to(1, -25.0));
+  CHECK(rig.kernel.command_position_request(1) == Approx(15.0).margin(1e-9));
+  CHECK(rig.kernel.command_position_request(2) == Approx(-25.0).margin(1e-9));
+}

@@ -49,3 +49,28 @@ TEST_CASE("6000 ticks of 8 axes with HLI lists in force allocate nothing", "[no_
   for (std::size_t i = 0; i < 8; ++i)
     CHECK(rig.error(i) == 0);
 }
+
+TEST_CASE("Targets losing their lists (axis error, enable off) and refused lists allocate nothing",
+          "[no_allocation]") {
+  Rig rig({axis(1, "X"), axis(8, "Y2"), axis(9, "Z")});
+  REQUIRE(rig.couple(1, {{1, h::HLI_AXIS_COUPLING_DIRECT, 0, 0}}));
+  REQUIRE(rig.couple(2, {{1, h::HLI_AXIS_COUPLING_MIRROR, 0, 0}}));
+  rig.start_move(0, 900.0);
+  rig.ticks(300);
+
+  ca::g_allocations = 0;
+  ca::g_counting = true;
+  // Y2's list taken again while axis 1 moves: 70200, Y2 brakes.
+  rig.kernel.gpAx()[1]->lr_mc_control.axis_coupling.command_w.semaphor_rw = true;
+  rig.tick();
+  rig.power[2].Enable = false;  // Z's drive off while it moves: 0x4356, list off
+  rig.ticks(2);
+  rig.kernel.gpAx()[2]->lr_mc_control.axis_coupling.command_w.semaphor_rw = true;  // refused
+  rig.ticks(1500);
+  ca::g_counting = false;
+  CHECK(ca::g_allocations == 0);
+  CHECK(rig.error(1) == 70200);
+  CHECK(rig.error(2) == 0x4356);
+  CHECK(rig.kernel.gpAx()[2]->lr_mc_control.axis_coupling.state_r.error_r == 0x4F06);
+  CHECK(rig.axes[0]->NcToPlc.CoupleState == 0);
+}

@@ -14,11 +14,7 @@ TEST_CASE("70200: a new list while a source moves stops the target; MC_Reset cle
           "[hli][kernel]") {
   Rig rig({axis(1, "X"), axis(8, "Y2")});
   const double a = rig.kernel.config("Y2").emergency_deceleration;
-  REQUIRE(rig.couple(
-      1, {{1, h::HLI_AXIS_COUPLING_DIRECT, 0, 0}, {8, h::HLI_AXIS_COUPLING_DIRECT, 0, 0}}));
-  rig.start_move(0, 900.0);
-  rig.start_move(1, 500.0, 500.0);
-  rig.ticks(300);
+  REQUIRE(rig.run_example_2(500.0, 500.0, 300));
   REQUIRE(rig.axes[0]->NcToPlc.SetVelo > 0.0);
   const double v_before = rig.axes[1]->NcToPlc.SetVelo;
   const double p_before = rig.set_pos(1);

@@ -111,6 +111,19 @@ struct Rig {
     return finish_move(i);
   }
 
+  // Seed example 2 in motion: Y2 (index 1) coupled DIRECT to axis 1 and to itself, axis 1 moving
+  // to 900 mm and Y2's program to `y2_target` at `y2_velocity`, `n` ticks on. True when taken.
+  bool run_example_2(double y2_target, double y2_velocity, int n) {
+    if (!couple(1,
+                {{1, h::HLI_AXIS_COUPLING_DIRECT, 0, 0}, {8, h::HLI_AXIS_COUPLING_DIRECT, 0, 0}})) {
+      return false;
+    }
+    start_move(0, 900.0);
+    start_move(1, y2_target, y2_velocity);
+    ticks(n);
+    return true;
+  }
+
   // MC_Reset on axis i; true when Done.
   bool reset_axis(std::size_t i) {
     reset[i].Execute = true;

@@ -26,6 +26,7 @@ struct Rig {
   std::vector<double> q, qv, qa, d, dv, da;
   std::unique_ptr<bool[]> referenced;  // std::vector<bool> has no span
   std::vector<plc::ErrorCode> stop;
+  std::vector<plc::ErrorCode> refusal;  // the kernel's reasons per axis; empty: none
 
   // Axes with the given logical numbers (ax_nr), in this order; `setup` is the template.
   explicit Rig(std::initializer_list<int> ax_nrs, nc::hli::AxisSetup setup = {}) {
@@ -73,7 +74,7 @@ struct Rig {
   }
 
   bool cycle() {
-    return stage.cycle(nc::hli::Inputs{q, qv, qa, {referenced.get(), n()}},
+    return stage.cycle(nc::hli::Inputs{q, qv, qa, {referenced.get(), n()}, refusal},
                        nc::hli::Outputs{d, dv, da, stop});
   }
 

@@ -40,7 +40,10 @@ void ServoAxis::handle_commands(CouplingPort& port) noexcept {
 
 void ServoAxis::handle(const plc::Command& command, CouplingPort& port) noexcept {
   ErrorCode code = ErrorCode::kNone;
-  if (slave_link_.coupled && refused_while_coupled(command.type)) {
+  // An HLI target's program feeds its drive only through its list (SPEC D3): external setpoints
+  // are refused there as on a coupled slave.
+  if ((slave_link_.coupled && refused_while_coupled(command.type)) ||
+      (hli_target() && command.type == CommandType::kExtSetPointGenEnable)) {
     channel_.answer(command.number, CommandState::kError,
                     plc::to_id(ErrorCode::kFunctionNotAllowed));
     return;

@@ -42,13 +42,14 @@ void ServoAxis::phase_publish(uint64_t cycle_counter) noexcept {
   out.CompensationLength = stack_.compensation().length();
   out.CompensationVelocityDiff = stack_.compensation().velocity_diff();
   channel_.publish(static_cast<int32_t>(index_));
-  const bool slave = slave_link_.coupled;
-  const bool master = slave_count_ > 0;
+  // A gear slave, or an HLI target (a list in force); a gear master, or an HLI source.
+  const bool slave = slave_link_.coupled || hli_target();
+  const bool master = slave_count_ > 0 || hli_source();
   const plc::CoupleState couple =
       slave ? (master ? plc::CoupleState::kMasterAndSlave : plc::CoupleState::kSlave)
             : (master ? plc::CoupleState::kMaster : plc::CoupleState::kSingle);
   out.CoupleState = static_cast<uint32_t>(couple);
-  out.GearRatio = slave ? slave_link_.factor : 0.0;
+  out.GearRatio = slave_link_.coupled ? slave_link_.factor : 0.0;
   out.CycleCounter = static_cast<uint32_t>(cycle_counter);
 
   // Constant velocity: a velocity job at its level, or the cruise phase of a positioning.
@@ -89,8 +90,9 @@ void ServoAxis::phase_publish(uint64_t cycle_counter) noexcept {
     state = AxisState::kErrorStop;
   } else if (!enabled) {
     state = AxisState::kDisabled;
-  } else if (slave) {
-    state = AxisState::kSynchronizedMotion;  // also while the master stands still (issue 9)
+  } else if (slave_link_.coupled || (hli_target() && kind == JobKind::kNone)) {
+    // Also while the master stands still (issue 9); an HLI target's own job shows instead.
+    state = AxisState::kSynchronizedMotion;
   } else if (locked_ || kind == JobKind::kStop || kind == JobKind::kEmergencyStop) {
     state = AxisState::kStopping;
   } else if (kind == JobKind::kPosition || kind == JobKind::kHalt) {

@@ -59,8 +59,10 @@ void ServoAxis::phase_set_values(AxisSnapshot& snapshot,
   snapshot.set_jerk = set_jerk_;
 }
 
-void ServoAxis::phase_drive_command(const KinematicState& drive, ErrorCode stop) noexcept {
+void ServoAxis::phase_drive_command(const KinematicState& drive, ErrorCode stop,
+                                    plc::CoupleState role) noexcept {
   if (stop != ErrorCode::kNone) raise_error(stop);
+  hli_role_ = role;
   drive_command_ = drive;
   drive_offset_ = drive.p - set_.p;
   drive_command_given_ = true;
@@ -283,6 +285,7 @@ void ServoAxis::finish_job() noexcept {
 void ServoAxis::raise_error(ErrorCode code) noexcept {
   if (!channel_.raise(code)) return;  // the first error stays until reset
   error_event_ = true;
+  ++errors_raised_;
   has_been_stopped_ = true;
   if (job_.active() && channel_.runs(job_.number())) {
     channel_.answer_current(CommandState::kError, plc::to_id(code));
@@ -319,6 +322,8 @@ void ServoAxis::reset_error() noexcept {
   if (!job_.active() && !slave_link_.coupled) {
     // The axis holds where it stands: no following error is carried over into the next start.
     set_ = KinematicState{drive_.measured_position() - drive_offset_, 0.0, 0.0};
+    // The drive position d steps to the actual one too: no feed-forward kick from that step.
+    previous_drive_position_ = drive_.measured_position();
     set_jerk_ = 0.0;
     target_ = set_.p;
     monitors_.reset_windows();

@@ -70,7 +70,18 @@ class ServoAxis {
   // set values phase (d) controls to this cycle (NcToPlc.SetPos; without a call they are the
   // program's set values), and `stop` != kNone raises that axis error (program on its emergency
   // ramp). The windows and software limits stay in program coordinates (actual − (d − q)).
-  void phase_drive_command(const KinematicState& drive, ErrorCode stop) noexcept;
+  // `role`: the axis's HLI part (a list in force: slave; a source of another axis's list:
+  // master), kept until the next call, for CoupleState and the refusal of external setpoints.
+  void phase_drive_command(const KinematicState& drive, ErrorCode stop,
+                           plc::CoupleState role) noexcept;
+  // What the HLI phase reads of the axis before phase (c): an axis error, the controller enable,
+  // external setpoint generation enabled.
+  bool has_error() const noexcept { return channel_.has_error(); }
+  // Counts the axis errors raised (wrapping): an error raised and reset between two phases (c)
+  // still shows as a change.
+  uint32_t errors_raised() const noexcept { return errors_raised_; }
+  bool controller_enabled() const noexcept { return channel_.controller_enabled(); }
+  bool external_enabled() const noexcept { return stack_.external().enabled(); }
   void phase_drive(AxisSnapshot& snapshot) noexcept;     // (d)
   void phase_monitors(AxisSnapshot& snapshot) noexcept;  // (e)
   void phase_publish(uint64_t cycle_counter) noexcept;   // (f)
@@ -202,6 +213,13 @@ class ServoAxis {
   double previous_drive_position_ = 0.0;
   double drive_offset_ = 0.0;
   bool drive_command_given_ = false;
+  plc::CoupleState hli_role_ = plc::CoupleState::kSingle;  // from phase (c), see there
+  bool hli_target() const noexcept {
+    return hli_role_ == plc::CoupleState::kSlave || hli_role_ == plc::CoupleState::kMasterAndSlave;
+  }
+  bool hli_source() const noexcept {
+    return hli_role_ == plc::CoupleState::kMaster || hli_role_ == plc::CoupleState::kMasterAndSlave;
+  }
   const KinematicState& drive_command() const noexcept {
     return drive_command_given_ ? drive_command_ : set_;
   }
@@ -220,6 +238,7 @@ class ServoAxis {
   bool locked_ = false;  // MC_Stop: motion commands refused until kStopRelease
   bool has_been_stopped_ = false;
   bool error_event_ = false;  // an error was raised in this cycle
+  uint32_t errors_raised_ = 0;
 };
 
 }  // namespace nc::detail

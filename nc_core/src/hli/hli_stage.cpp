@@ -63,6 +63,7 @@ void HliStage::reserve(std::size_t axes) {
   setups_.reserve(axes);
   pointers_.reserve(axes);
   targets_.reserve(axes);
+  source_uses_.reserve(axes);
   dfs_stack_.reserve((axes + 1) * kListSize);
   dfs_seen_.reserve(axes);
   rows_.reserve(axes);
@@ -95,6 +96,7 @@ plc::hli::HLI_AX& HliStage::add_axis(const AxisSetup& setup) {
   units_.emplace_back();
   pointers_.push_back(&units_.back());
   targets_.emplace_back();
+  source_uses_.push_back(0);
   dfs_seen_.resize(n, 0);
 
   // The new axis is free (d = q), without a row; its column is zero in every stored row.
@@ -119,7 +121,8 @@ bool HliStage::cycle(const Inputs& in, const Outputs& out) noexcept {
   if (in.program_position.size() != n || in.program_velocity.size() != n ||
       in.program_acceleration.size() != n || in.referenced.size() != n ||
       out.drive_position.size() != n || out.drive_velocity.size() != n ||
-      out.drive_acceleration.size() != n || out.stop.size() != n) {
+      out.drive_acceleration.size() != n || out.stop.size() != n ||
+      (!in.refusal.empty() && in.refusal.size() != n)) {
     return false;
   }
   const Eigen::Index m = ix(n);
@@ -161,7 +164,9 @@ bool HliStage::cycle(const Inputs& in, const Outputs& out) noexcept {
 
   // 2. Lists whose semaphore is set, in axis order; each takes effect from this cycle's d on.
   for (std::size_t i = 0; i < n; ++i) {
-    if (units_[i].lr_mc_control.axis_coupling.command_w.semaphor_rw) evaluate(i, out);
+    if (units_[i].lr_mc_control.axis_coupling.command_w.semaphor_rw) {
+      evaluate(i, in.refusal.empty() ? ErrorCode::kNone : in.refusal[i], out);
+    }
   }
 
   // 3. FRACT targets on a referenced axis: can the drive still stop before its limits?
@@ -284,11 +289,11 @@ bool HliStage::involved_axis_moves(std::size_t target, const Candidate& list) co
   return false;
 }
 
-void HliStage::evaluate(std::size_t target, const Outputs& out) noexcept {
+void HliStage::evaluate(std::size_t target, ErrorCode refusal, const Outputs& out) noexcept {
   h::HLI_AX_COUPLING& unit = units_[target].lr_mc_control.axis_coupling;
   unit.command_w.semaphor_rw = false;  // reset in the cycle it is evaluated
   Candidate list;
-  ErrorCode code = parse(unit.command_w, list);
+  ErrorCode code = refusal != ErrorCode::kNone ? refusal : parse(unit.command_w, list);
   if (code == ErrorCode::kNone && makes_loop(target, list)) code = ErrorCode::kHliCouplingLoop;
   if (code != ErrorCode::kNone) {
     unit.state_r.error_r = plc::to_id(code);  // refused: the list in force stays
@@ -306,6 +311,7 @@ void HliStage::take(std::size_t target, const Candidate& list) noexcept {
   Target& t = targets_[target];
   const Eigen::Index r = ix(target);
   const double d_now = d_(r);
+  if (t.state == State::kCoupled) count_sources(target, t, false);
   if (list.count == 0) {
     // Switched off: the drive stays where it stands and follows the program from there.
     t = Target{};
@@ -329,6 +335,7 @@ void HliStage::take(std::size_t target, const Candidate& list) noexcept {
       t.entries[e].q_activation = q_(ix(list.entries[e].source));
       row(ix(list.entries[e].source)) += list.entries[e].factor;
     }
+    count_sources(target, t, true);
     // d = d(activation) + Σ K·(q − q(activation)): c = d(activation) − Σ K·q(activation).
     c_(r) = d_now - row.dot(q_);
     dv_(r) = row.dot(qv_);
@@ -370,12 +377,17 @@ void HliStage::stop(std::size_t axis) noexcept {
   Target& t = targets_[axis];
   const Eigen::Index r = ix(axis);
   const double v = dv_(r);
+  if (t.state == State::kCoupled) count_sources(axis, t, false);
   t = Target{};
   t.state = State::kBraking;
   t.brake_velocity = v;
   drop_row(axis);
   c_(r) = d_(r);
   publish(axis);
+}
+
+void HliStage::release(std::size_t axis) noexcept {
+  if (axis < size() && targets_[axis].state == State::kCoupled) take(axis, Candidate{});
 }
 
 bool HliStage::cannot_stop_before_limit(std::size_t axis) const noexcept {
@@ -391,6 +403,18 @@ bool HliStage::cannot_stop_before_limit(std::size_t axis) const noexcept {
     return true;
   }
   return s.sw_limit_min_enabled && dv_(r) < 0.0 && d_next + std::min(reach, 0.0) < s.sw_limit_min;
+}
+
+void HliStage::count_sources(std::size_t target, const Target& t, bool add) noexcept {
+  for (std::size_t e = 0; e < t.count; ++e) {
+    const std::size_t source = t.entries[e].source;
+    if (source == target) continue;
+    if (add) {
+      ++source_uses_[source];
+    } else {
+      --source_uses_[source];
+    }
+  }
 }
 
 void HliStage::publish(std::size_t axis) noexcept {

@@ -52,6 +52,10 @@ struct Inputs {
   std::span<const double> program_velocity;      // mm/s
   std::span<const double> program_acceleration;  // mm/s²
   std::span<const bool> referenced;              // homed: software limits are monitored (70195)
+  // The kernel's reasons to refuse a new list on an axis (kNone: none), checked before the
+  // list itself: the axis is in error (0x4F06), has no controller enable (0x4223) or has
+  // external setpoint generation enabled (0x424E). Empty: no such reasons (the stage alone).
+  std::span<const plc::ErrorCode> refusal = {};
 };
 
 // Per-axis outputs of one cycle.
@@ -93,6 +97,10 @@ class HliStage {
   // reasons): its list goes off and its drive brakes from its current velocity at the emergency
   // deceleration, then follows its own program motion from where it stands.
   void stop(std::size_t axis) noexcept;
+  // Cycle: the target's drive is off (no controller enable): its list goes off without braking,
+  // as a list switched off by the PLC (d stays, then follows the axis's own program). No-op for
+  // an axis without a list in force.
+  void release(std::size_t axis) noexcept;
 
   // The program coordinate #CHANNEL INIT [CMDPOS] would give the axis now (D5): the drive
   // position d by default; with P-AXIS-00436 the q for which the target's list gives d, relative
@@ -100,6 +108,8 @@ class HliStage {
   double command_position_request(std::size_t axis) const noexcept;
 
   bool coupled(std::size_t axis) const noexcept { return targets_[axis].state == State::kCoupled; }
+  // The axis is a source of another axis's list in force (its self entry does not count).
+  bool source_of_other(std::size_t axis) const noexcept { return source_uses_[axis] > 0; }
   bool braking(std::size_t axis) const noexcept { return targets_[axis].state == State::kBraking; }
   // K(target, source) in force: the unit row for an axis without a list, 0 while braking.
   double factor(std::size_t target, std::size_t source) const noexcept;
@@ -134,7 +144,7 @@ class HliStage {
                        Candidate& list) const noexcept;
   bool makes_loop(std::size_t target, const Candidate& list) noexcept;
   bool involved_axis_moves(std::size_t target, const Candidate& list) const noexcept;
-  void evaluate(std::size_t target, const Outputs& out) noexcept;
+  void evaluate(std::size_t target, plc::ErrorCode refusal, const Outputs& out) noexcept;
   void take(std::size_t target, const Candidate& list) noexcept;
   void drop_row(std::size_t axis) noexcept;
   void grow_matrix(std::size_t axes);
@@ -142,12 +152,15 @@ class HliStage {
   void advance_brake(std::size_t axis) noexcept;
   bool cannot_stop_before_limit(std::size_t axis) const noexcept;
   void publish(std::size_t axis) noexcept;
+  // Counts t's sources other than `target` itself in source_uses_ (add) or out of it.
+  void count_sources(std::size_t target, const Target& t, bool add) noexcept;
 
   double cycle_time_;
   std::vector<AxisSetup> setups_;
   std::deque<plc::hli::HLI_AX> units_;  // deque: addresses stay valid as axes are added
   std::vector<plc::hli::HLI_AX*> pointers_;
   std::vector<Target> targets_;
+  std::vector<uint32_t> source_uses_;   // entries naming the axis in other axes' lists in force
   std::vector<std::size_t> dfs_stack_;  // loop check scratch (reserved in add_axis)
   std::vector<uint8_t> dfs_seen_;
 

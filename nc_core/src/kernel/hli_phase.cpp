@@ -14,20 +14,26 @@ plc::hli::HLI_AX& HliPhase::add_axis(const AxisConfig& effective) {
   const std::size_t n = stage_.size() + 1;
   for (std::vector<double>* v : {&q_, &qv_, &qa_, &d_, &dv_, &da_})
     v->reserve(n);
-  stop_.reserve(n);
+  for (std::vector<plc::ErrorCode>* v : {&stop_, &refusal_, &pending_})
+    v->reserve(n);
+  errors_seen_.reserve(n);
   auto referenced = std::make_unique<bool[]>(n);
   std::fill(referenced.get(), referenced.get() + n, true);
   plc::hli::HLI_AX& unit = stage_.add_axis(hli::axis_setup(effective));  // throws before growing
   for (std::vector<double>* v : {&q_, &qv_, &qa_, &d_, &dv_, &da_})
     v->push_back(0.0);
-  stop_.push_back(plc::ErrorCode::kNone);
+  for (std::vector<plc::ErrorCode>* v : {&stop_, &refusal_, &pending_})
+    v->push_back(plc::ErrorCode::kNone);
+  errors_seen_.push_back(0);
   referenced_ = std::move(referenced);
   return unit;
 }
 
-double HliPhase::command_position_request(int ax_nr) const noexcept {
+double HliPhase::command_position_request(
+    int ax_nr, std::span<const std::unique_ptr<ServoAxis>> axes) const noexcept {
   const std::size_t axis = stage_.index_of(ax_nr);
   if (axis == hli::HliStage::kNoAxis) return std::numeric_limits<double>::quiet_NaN();
+  if (!engaged_) return axes[axis]->ref().NcToPlc.SetPos;
   return stage_.command_position_request(axis);
 }
 
@@ -43,6 +49,20 @@ bool HliPhase::begin_cycle() noexcept {
   return engaged_;
 }
 
+plc::ErrorCode HliPhase::refusal(const ServoAxis& axis) noexcept {
+  if (axis.has_error()) return plc::ErrorCode::kAxisInErrorState;
+  if (!axis.controller_enabled()) return plc::ErrorCode::kNoControllerOrFeedEnable;
+  if (axis.external_enabled()) return plc::ErrorCode::kFunctionNotAllowed;
+  return plc::ErrorCode::kNone;
+}
+
+plc::CoupleState HliPhase::role(std::size_t axis) const noexcept {
+  const bool target = stage_.coupled(axis);
+  const bool source = stage_.source_of_other(axis);
+  if (target) return source ? plc::CoupleState::kMasterAndSlave : plc::CoupleState::kSlave;
+  return source ? plc::CoupleState::kMaster : plc::CoupleState::kSingle;
+}
+
 void HliPhase::run(std::span<const std::unique_ptr<ServoAxis>> axes,
                    std::span<const AxisSnapshot> snapshots) noexcept {
   const std::size_t n = axes.size();
@@ -52,13 +72,32 @@ void HliPhase::run(std::span<const std::unique_ptr<ServoAxis>> axes,
     qa_[i] = snapshots[i].set_acceleration;
     // The homed bit as last published (no homing yet: every axis counts as homed).
     referenced_[i] = plc::test_bit(axes[i]->ref().NcToPlc.StateDWord, plc::kStateHomed);
+    refusal_[i] = refusal(*axes[i]);
+    pending_[i] = plc::ErrorCode::kNone;
+    // A target in axis error (raised in phases (a), (b) of this cycle or (e) of the last one,
+    // also one MC_Reset has cleared since) loses its list: its drive brakes from where it is
+    // instead of following its sources. Without its drive (controller enable off) the list goes
+    // off too, without a ramp to brake on; losing the enable while the drive moves is an axis
+    // error, as during a job. (A target was coupled at the last phase (c): errors_seen_ is
+    // that phase's count.)
+    const uint32_t raised = axes[i]->errors_raised();
+    const bool new_error = raised != errors_seen_[i];
+    errors_seen_[i] = raised;
+    if (!stage_.coupled(i)) continue;
+    if (axes[i]->has_error() || new_error) {
+      stage_.stop(i);
+    } else if (!axes[i]->controller_enabled()) {
+      if (dv_[i] != 0.0) pending_[i] = plc::ErrorCode::kControllerEnableMissing;
+      stage_.release(i);
+    }
   }
-  const hli::Inputs in{q_, qv_, qa_, std::span<const bool>(referenced_.get(), n)};
+  const hli::Inputs in{q_, qv_, qa_, std::span<const bool>(referenced_.get(), n), refusal_};
   const hli::Outputs out{d_, dv_, da_, stop_};
   if (!stage_.cycle(in, out)) return;  // sizes always match: every axis was added here
   bool engaged = false;
   for (std::size_t i = 0; i < n; ++i) {
-    axes[i]->phase_drive_command(KinematicState{d_[i], dv_[i], da_[i]}, stop_[i]);
+    const plc::ErrorCode stop = stop_[i] != plc::ErrorCode::kNone ? stop_[i] : pending_[i];
+    axes[i]->phase_drive_command(KinematicState{d_[i], dv_[i], da_[i]}, stop, role(i));
     engaged = engaged || d_[i] != q_[i] || stage_.coupled(i) || stage_.braking(i);
   }
   engaged_ = engaged;

@@ -7,6 +7,11 @@
 // semaphore set by the PLC. Only then does the kernel run phase (c) (and the whole kernel as one
 // block, since the stage needs every axis's q); otherwise d = q and phase (c) costs one flag read
 // per axis and cycle (the semaphores).
+//
+// Safety (docs/behaviour.md "HLI axis coupling", "A target's own error"): before the stage runs,
+// a target that is in axis error or has lost its controller enable loses its list (the stage
+// brakes its drive, HliStage::stop); a new list on such an axis, or on one with external
+// setpoint generation enabled, is refused. Each axis is told its HLI role (CoupleState).
 #pragma once
 
 #include <cstddef>
@@ -17,6 +22,7 @@
 #include "hli/hli_stage.hpp"
 #include "nc_core/axis_config.hpp"
 #include "nc_core/axis_snapshot.hpp"
+#include "plc_interface/axis_ref.hpp"
 #include "plc_interface/error_code.hpp"
 #include "plc_interface/hli.hpp"
 
@@ -32,8 +38,10 @@ class HliPhase {
   plc::hli::HLI_AX& add_axis(const AxisConfig& effective);
 
   std::span<plc::hli::HLI_AX* const> gpAx() const noexcept { return stage_.gpAx(); }
-  // D5; NaN for an unknown logical axis number.
-  double command_position_request(int ax_nr) const noexcept;
+  // D5; NaN for an unknown logical axis number. While the stage is idle its drive values are not
+  // kept up to date: every axis has d = q then, its published NcToPlc.SetPos.
+  double command_position_request(int ax_nr,
+                                  std::span<const std::unique_ptr<ServoAxis>> axes) const noexcept;
 
   // Cycle, before phase (a): whether phase (c) runs in this cycle (see above).
   bool begin_cycle() noexcept;
@@ -43,10 +51,17 @@ class HliPhase {
            std::span<const AxisSnapshot> snapshots) noexcept;
 
  private:
+  // Why a new list on the axis is refused now (kNone: it is not), see above.
+  static plc::ErrorCode refusal(const ServoAxis& axis) noexcept;
+  plc::CoupleState role(std::size_t axis) const noexcept;
+
   hli::HliStage stage_;
   std::vector<double> q_, qv_, qa_, d_, dv_, da_;
   std::unique_ptr<bool[]> referenced_;
   std::vector<plc::ErrorCode> stop_;
+  std::vector<plc::ErrorCode> refusal_;
+  std::vector<plc::ErrorCode> pending_;  // axis errors raised on the axis with this cycle's d
+  std::vector<uint32_t> errors_seen_;    // ServoAxis::errors_raised() at the last phase (c)
   bool engaged_ = false;
 };
 
