@@ -1,6 +1,7 @@
-// Gear coupling sample (seed 000 §3.2): master + cascade of two slaves through gear in at rest,
-// master start at override 30 % then 100 %, factor change, online decoupling, slave stop and
-// master stop; recorded with the scope and written as CSV + one SVG with all axes.
+// Gear coupling sample (seed 000 §3.2): a master and two slaves, first as a star (gear in at
+// rest, master start at override 30 % then 100 %), then re-coupled at rest as a cascade (factor
+// change, online decoupling, slave stop, master stop); recorded with the scope and written as
+// CSV + one SVG with all axes.
 //
 // Usage: gear_coupling [output folder, default out/]
 // Exit code 0 when the run showed what the seed describes (GearCouplingSample::ok()), 1
