@@ -137,6 +137,8 @@ std::string_view error_text(ErrorCode code) noexcept {
       return "two-speed axis: distance to the target not larger than the braking distance";
     case E::kCouplingLoop:
       return "coupling would close a loop (or master = slave)";
+    case E::kStartFarOutsideLimits:
+      return "start state more than 1e9 times outside the limits of the move";
     case E::kHliFractOnReferencedAxis:
       return "FRACT coupling: the axis cannot stop before a software limit";
     case E::kHliChangeWhileMoving:

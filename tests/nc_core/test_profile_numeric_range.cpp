@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "nc_core/profile.hpp"
+#include "plc_interface/error_code.hpp"
 #include "profile_checks.hpp"
 
 namespace {
@@ -103,4 +104,50 @@ TEST_CASE("problems at the edges of the range are planned and keep the contract"
   const Profile c = nc::plan_position(far, 1e12, large);
   REQUIRE(c.ok());
   CHECK(profile_checks::check_position_profile(c, far, 1e12, large).ok());
+}
+
+TEST_CASE("a start more than 1e9 times outside the limits is refused with 0x4F70",
+          "[profile][range]") {
+  CHECK(plc::to_id(ErrorCode::kStartFarOutsideLimits) == 0x4F70U);
+  // The kept fuzz input of P2: a = -5.96e8 against limits of 7.04e-9 (8.5e16 times A) broke
+  // continuity at t = 3.6e33 s; now refused by every plan function that takes limits.
+  const double tiny = 7.041529113171147e-09;
+  const Limits small{tiny, tiny, tiny, tiny};
+  const KinematicState p2{tiny, 7.0415291131975135e-09, -595821443.509712};
+  check_refused(nc::plan_position(p2, tiny, small), ErrorCode::kStartFarOutsideLimits);
+  check_refused(nc::plan_velocity(p2, 0.0, small), ErrorCode::kStartFarOutsideLimits);
+  check_refused(nc::plan_position(p2, tiny, 0.5 * tiny, small), ErrorCode::kStartFarOutsideLimits);
+
+  // |a| above 1e9·max(A+, A-): A± = 1, a = 1.01e9 (its forced velocity a²/2J = 5.1e5 mm/s is
+  // far below 1e9·V with J = 1e12).
+  const Limits soft{2000.0, 1.0, 1.0, 1e12};
+  check_refused(nc::plan_position({0.0, 0.0, 1.01e9}, 100.0, soft),
+                ErrorCode::kStartFarOutsideLimits);
+  check_refused(nc::plan_velocity({0.0, 0.0, -1.01e9}, 0.0, soft),
+                ErrorCode::kStartFarOutsideLimits);
+  // |v| above 1e9·V: V = 1e-3, v = 1.01e6 mm/s.
+  const Limits creep{1e-3, 5000.0, 5000.0, 50000.0};
+  check_refused(nc::plan_position({0.0, 1.01e6, 0.0}, 100.0, creep),
+                ErrorCode::kStartFarOutsideLimits);
+  check_refused(nc::plan_velocity({0.0, -1.01e6, 0.0}, 0.0, creep),
+                ErrorCode::kStartFarOutsideLimits);
+  // The velocity a forces whatever is done, v + a·|a|/2J, above 1e9·V: kLimits (V 2000,
+  // J 50000), a = 5e8 (1e5 times A) forces 2.5e12 mm/s > 2e12.
+  check_refused(nc::plan_position({0.0, 0.0, 5e8}, 100.0, kLimits),
+                ErrorCode::kStartFarOutsideLimits);
+}
+
+TEST_CASE("a start 1e6 times above V (override 1 ppm at full speed) is planned",
+          "[profile][range]") {
+  // The kernel's farthest start from an override alone: v = 2000 mm/s, the level 1 ppm of it.
+  const Limits slow{0.002, 5000.0, 5000.0, 50000.0};
+  const KinematicState full{0.0, 2000.0, 0.0};
+  profile_checks::StartRelief relief;
+  relief.over_speed = true;
+  const Profile vel = nc::plan_velocity(full, 0.002, slow);
+  REQUIRE(vel.ok());
+  CHECK(profile_checks::check_velocity_profile(vel, full, 0.002, slow, {}, relief).ok());
+  const Profile pos = nc::plan_position(full, 1000.0, slow);
+  REQUIRE(pos.ok());
+  CHECK(profile_checks::check_position_profile(pos, full, 1000.0, slow, {}, relief).ok());
 }

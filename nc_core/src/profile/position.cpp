@@ -50,6 +50,7 @@ Profile plan_position(const KinematicState& start, double target, const Limits& 
   ErrorCode e = detail::check_state(start);
   if (e == ErrorCode::kNone) e = detail::check_target(target);
   if (e == ErrorCode::kNone) e = detail::check_limits(limits);
+  if (e == ErrorCode::kNone) e = detail::check_start_against(start, limits);
   if (e != ErrorCode::kNone) return Profile::failure(e);
 
   const Bounds bounds{limits.acceleration, limits.deceleration, limits.jerk};

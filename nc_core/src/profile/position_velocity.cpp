@@ -93,6 +93,7 @@ Profile plan_position(const KinematicState& start, double target, double target_
   ErrorCode e = detail::check_state(start);
   if (e == ErrorCode::kNone && !std::isfinite(target)) e = ErrorCode::kPositionNotFinite;
   if (e == ErrorCode::kNone) e = detail::check_limits(limits);
+  if (e == ErrorCode::kNone) e = detail::check_start_against(start, limits);
   if (e == ErrorCode::kNone && !std::isfinite(target_velocity)) {
     e = ErrorCode::kParameterNotFinite;
   }

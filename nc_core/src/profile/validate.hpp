@@ -1,6 +1,7 @@
 // Input checks shared by the plan functions (internal): every bad input gets its own code.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 #include "nc_core/profile.hpp"
@@ -55,6 +56,25 @@ inline ErrorCode check_limits(const Limits& l) noexcept {
   if (e == ErrorCode::kNone) e = check_positive(l.deceleration, ErrorCode::kDecelerationNotAllowed);
   if (e == ErrorCode::kNone) e = check_positive(l.jerk, ErrorCode::kJerkNotAllowed);
   return e;
+}
+
+// How far outside its limits a start may lie (fuzz finding P2): |a| at most kMaxStartRatio times
+// max(A+, A-), and |v| as well as the velocity the start's acceleration forces whatever is done,
+// |v + a·|a| / 2J|, at most kMaxStartRatio times V. Beyond, bringing the start back takes
+// kMaxStartRatio times the problem's own times and kMaxStartRatio² its distances, and a double no
+// longer keeps the profile continuous (a = 1e17·A broke it at t = 3.6e33 s). The kernel's starts
+// stay far inside (override 1 ppm from full speed: 1e6), the outside-the-limits suites use <= 3.
+inline constexpr double kMaxStartRatio = 1e9;
+
+// A start too far outside `l` (both already in range): kStartFarOutsideLimits.
+inline ErrorCode check_start_against(const KinematicState& s, const Limits& l) noexcept {
+  const double forced = std::abs(s.v + s.a * std::abs(s.a) / (2.0 * l.jerk));
+  const double speed = std::max(std::abs(s.v), forced);
+  if (!(std::abs(s.a) <= kMaxStartRatio * std::max(l.acceleration, l.deceleration)) ||
+      !(speed <= kMaxStartRatio * l.velocity)) {
+    return ErrorCode::kStartFarOutsideLimits;
+  }
+  return ErrorCode::kNone;
 }
 
 // A target position: NaN / inf kPositionNotFinite, beyond kMaxMagnitude kTargetPositionNotAllowed.
