@@ -151,3 +151,26 @@ TEST_CASE("a start 1e6 times above V (override 1 ppm at full speed) is planned",
   REQUIRE(pos.ok());
   CHECK(profile_checks::check_position_profile(pos, full, 1000.0, slow, {}, relief).ok());
 }
+
+TEST_CASE("a start at V with an acceleration of rounding size cruises at a = 0",
+          "[profile][range]") {
+  // Fuzz finding P3: v just below V, a = -1.5e-23 (2e-15 of A), target 1.3e11 mm away at V =
+  // 7.04e-9 mm/s. The push to V took the start as at (V, 0) within its rounding tolerance and
+  // gave no piece, so the cruise of 1.84e19 s carried the start's a: its end lay 2.5e15 mm short
+  // of the stop that follows it.
+  const Limits l{7.0415291131711472e-09, 7.0415291131711472e-09, 7.0419991054345708e-09,
+                 2.3093894380261804e-08};
+  const KinematicState start{7.0415291131711472e-09, 7.0415291131710959e-09,
+                             -1.4895713343675384e-23};
+  const double target = 129641627198.24313;
+  const Profile prof = nc::plan_position(start, target, l);
+  REQUIRE(prof.ok());
+  CHECK(prof.duration() == Approx(1.8411004927289029e+19).epsilon(1e-12));
+  // A ramp of |a| / J = 6.45e-16 s takes a to 0; the cruise holds a = 0.
+  REQUIRE(prof.segment_count() == 5);
+  CHECK(prof.segment(0).duration == Approx(6.450065588074504e-16).epsilon(1e-9));
+  CHECK(prof.segment(1).a == 0.0);
+  const profile_checks::Finding f = profile_checks::check_position_profile(prof, start, target, l);
+  INFO(profile_checks::to_string(f));
+  CHECK(f.ok());
+}

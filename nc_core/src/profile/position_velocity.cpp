@@ -197,7 +197,8 @@ Profile plan_position(const KinematicState& start, double target, double target_
   if (n_change < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
   const double s_end = s.p + detail::pieces_distance(limits.velocity, 0.0, change, n_change);
   const double cruise = std::max((goal - s_end) / limits.velocity, 0.0);
-  return finish_moving(start, target, v_end, dir, push, n_push, cruise, change, n_change);
+  const int n_head = detail::settle_push(push, n_push, s.a, limits.jerk);
+  return finish_moving(start, target, v_end, dir, push, n_head, cruise, change, n_change);
 }
 
 }  // namespace nc
