@@ -18,13 +18,14 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "fail.hpp"
 #include "nc_core/axis_config.hpp"
 #include "plc_interface/axis_ref.hpp"
 
 namespace fuzz {
 
 // The first NcToPlc double that is not finite, by name; nullptr when all are.
-inline const char* non_finite_field(const plc::NCTOPLC_AXIS_REF& n) noexcept {
+FUZZ_CHECKER inline const char* non_finite_field(const plc::NCTOPLC_AXIS_REF& n) noexcept {
   struct Field {
     const char* name;
     double value;
@@ -84,7 +85,7 @@ class AxisWatch {
   }
 
   // --- After the PLC's calls of one cycle: the commands it posted (kernel drained the rest).
-  void posted(const plc::AXIS_REF& axis) noexcept {
+  FUZZ_CHECKER void posted(const plc::AXIS_REF& axis) noexcept {
     const std::size_t now = axis.Mailbox.pending();
     for (std::size_t i = pending_; i < now; ++i) {
       ++posted_total_;
@@ -98,7 +99,7 @@ class AxisWatch {
   }
 
   // --- After the NC cycle: the invariants. nullptr when all hold.
-  const char* check(const plc::AXIS_REF& axis) noexcept {
+  FUZZ_CHECKER const char* check(const plc::AXIS_REF& axis) noexcept {
     pending_ = axis.Mailbox.pending();
     const plc::NCTOPLC_AXIS_REF& n = axis.NcToPlc;
     if (non_finite_field(n) != nullptr) return "NcToPlc double not finite";
@@ -152,7 +153,7 @@ class AxisWatch {
     }
   }
 
-  const char* check_answers(const plc::CommandMailbox& mailbox) noexcept {
+  FUZZ_CHECKER const char* check_answers(const plc::CommandMailbox& mailbox) noexcept {
     for (Tracked& t : tracked_) {
       if (!t.live) continue;
       ++t.age;
