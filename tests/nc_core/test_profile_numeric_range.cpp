@@ -137,6 +137,28 @@ TEST_CASE("a start more than 1e9 times outside the limits is refused with 0x4F70
                 ErrorCode::kStartFarOutsideLimits);
 }
 
+TEST_CASE("a start whose braking distance is above 1e15 is refused with 0x4F70",
+          "[profile][range]") {
+  // Fuzz finding P4: v = -1.6e6 mm/s (5.4e4 times V) against A- = 7e-9 needs 1.9e26 mm to stop;
+  // the profile broke continuity by 1.3e29 at t = 2.3e14 s.
+  const Limits p4{30.243137254883315, 7.0415291131711472e-09, 7.0415291132121761e-09,
+                  1064510.2433593273};
+  check_refused(
+      nc::plan_position({7.0415308689085601e-09, -1622465.2431446458, 7.0415291131712373e-09},
+                        7.0415291131643709e-09, p4),
+      ErrorCode::kStartFarOutsideLimits);
+  // At 2000 mm/s: A- = 1.9e-9 brakes over 1.05e15 (refused), 2.1e-9 over 9.5e14 (planned).
+  const KinematicState fast{0.0, 2000.0, 0.0};
+  check_refused(nc::plan_position(fast, 0.0, Limits{2000.0, 5000.0, 1.9e-9, 50000.0}),
+                ErrorCode::kStartFarOutsideLimits);
+  check_refused(nc::plan_velocity(fast, 0.0, Limits{2000.0, 5000.0, 1.9e-9, 50000.0}),
+                ErrorCode::kStartFarOutsideLimits);
+  const Limits slow_brake{2000.0, 5000.0, 2.1e-9, 50000.0};
+  const Profile vel = nc::plan_velocity(fast, 0.0, slow_brake);
+  REQUIRE(vel.ok());
+  CHECK(profile_checks::check_velocity_profile(vel, fast, 0.0, slow_brake).ok());
+}
+
 TEST_CASE("a start 1e6 times above V (override 1 ppm at full speed) is planned",
           "[profile][range]") {
   // The kernel's farthest start from an override alone: v = 2000 mm/s, the level 1 ppm of it.

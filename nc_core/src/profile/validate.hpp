@@ -65,13 +65,19 @@ inline ErrorCode check_limits(const Limits& l) noexcept {
 // longer keeps the profile continuous (a = 1e17·A broke it at t = 3.6e33 s). The kernel's starts
 // stay far inside (override 1 ppm from full speed: 1e6), the outside-the-limits suites use <= 3.
 inline constexpr double kMaxStartRatio = 1e9;
+// The braking distance from the start, speed² / 2A- with that speed, at most kMaxStopDistance
+// (fuzz finding P4: v = 1.6e6 against A- = 7e-9 must travel 1.9e26 to stop, and the profile broke
+// continuity by 1e29). 1000 times the position range; the planner suites stay below 5e11.
+inline constexpr double kMaxStopDistance = 1e15;
 
-// A start too far outside `l` (both already in range): kStartFarOutsideLimits.
+// A start too far outside `l` (both already in range), or too fast to stop within
+// kMaxStopDistance: kStartFarOutsideLimits.
 inline ErrorCode check_start_against(const KinematicState& s, const Limits& l) noexcept {
   const double forced = std::abs(s.v + s.a * std::abs(s.a) / (2.0 * l.jerk));
   const double speed = std::max(std::abs(s.v), forced);
   if (!(std::abs(s.a) <= kMaxStartRatio * std::max(l.acceleration, l.deceleration)) ||
-      !(speed <= kMaxStartRatio * l.velocity)) {
+      !(speed <= kMaxStartRatio * l.velocity) ||
+      !(speed * speed <= 2.0 * l.deceleration * kMaxStopDistance)) {
     return ErrorCode::kStartFarOutsideLimits;
   }
   return ErrorCode::kNone;
