@@ -5,7 +5,8 @@
 //    limit (A+, A-, emergency deceleration), each widened only by what the PLC itself asked for
 //    and docs/behaviour.md documents as allowed: accelerations / decelerations given to a
 //    move, MC_Halt or MC_Stop; a compensation's VK and AK± on top of the basic motion (B7); the
-//    fed external set values (B8). The widening lasts until the axis rests again;
+//    fed external set values (B8). The widening lasts until the axis rests again. A coupled
+//    slave instead has GearRatio times its master's set velocity and acceleration (C1, C2);
 //  - every command number posted is answered (leaves kPosted) within 2 NC cycles, its answer
 //    slot is never lost, the states only move forward (posted → active → reached → an outcome),
 //    and an outcome, once given, never changes.
@@ -84,6 +85,13 @@ class AxisWatch {
     acceleration_ += std::fabs(a);
   }
 
+  // A coupled slave (StateDWord bit kStateCoupled) follows its master: its set velocity and
+  // acceleration are GearRatio times the master's of the same cycle (docs/behaviour.md, "Slave
+  // axes"), checked instead of its own limits while it is operational (without its controller
+  // enable the set position follows the actual one). `master` is the master's image, nullptr
+  // when the PLC does not know it. Set before every check().
+  void follow(const plc::NCTOPLC_AXIS_REF* master) noexcept { master_ = master; }
+
   // --- After the PLC's calls of one cycle: the commands it posted (kernel drained the rest).
   FUZZ_CHECKER void posted(const plc::AXIS_REF& axis) noexcept {
     const std::size_t now = axis.Mailbox.pending();
@@ -103,9 +111,15 @@ class AxisWatch {
     pending_ = axis.Mailbox.pending();
     const plc::NCTOPLC_AXIS_REF& n = axis.NcToPlc;
     if (non_finite_field(n) != nullptr) return "NcToPlc double not finite";
-    if (std::fabs(n.SetVelo) > velocity_ * (1.0 + 1e-9) + 1e-9) return "set velocity above limit";
-    if (std::fabs(n.SetAcc) > acceleration_ * (1.0 + 1e-6) + 1e-6) {
-      return "set acceleration above limit";
+    if (plc::test_bit(n.StateDWord, plc::kStateCoupled)) {
+      if (const char* broken = check_following(n)) return broken;
+    } else {
+      if (std::fabs(n.SetVelo) > velocity_ * (1.0 + 1e-9) + 1e-9) {
+        return "set velocity above limit";
+      }
+      if (std::fabs(n.SetAcc) > acceleration_ * (1.0 + 1e-6) + 1e-6) {
+        return "set acceleration above limit";
+      }
     }
     const bool resting = n.SetVelo == 0.0 && n.SetAcc == 0.0 &&
                          !plc::test_bit(n.StateDWord, plc::kStateHasJob) &&
@@ -128,6 +142,27 @@ class AxisWatch {
     int age = 0;  // NC cycles since it was posted
     bool live = false;
   };
+
+  static bool near(double x, double y) noexcept {
+    return std::fabs(x - y) <= 1e-9 * (std::fabs(x) + std::fabs(y)) + 1e-9;
+  }
+  const char* check_following(const plc::NCTOPLC_AXIS_REF& n) const noexcept {
+    if (n.GearRatio == 0.0) return "a coupled slave shows no gear ratio";
+    // Not checked while either axis is not operational: a master without its controller enable
+    // publishes set values that follow its actual position after its slaves sampled it, and the
+    // reaction of the slaves to that is SPEC C7, not built yet (docs/behaviour.md).
+    if (master_ == nullptr || !plc::test_bit(n.StateDWord, plc::kStateOperational) ||
+        !plc::test_bit(master_->StateDWord, plc::kStateOperational)) {
+      return nullptr;
+    }
+    if (!near(n.SetVelo, n.GearRatio * master_->SetVelo)) {
+      return "slave set velocity is not gear ratio x master set velocity";
+    }
+    if (!near(n.SetAcc, n.GearRatio * master_->SetAcc)) {
+      return "slave set acceleration is not gear ratio x master set acceleration";
+    }
+    return nullptr;
+  }
 
   static bool usable(double x) noexcept { return std::isfinite(x) && x > 0.0; }
   void widen_acceleration(double x) noexcept {
@@ -192,6 +227,7 @@ class AxisWatch {
   double delay_;
   double stop_jerk_;
   double velocity_ = 0.0;
+  const plc::NCTOPLC_AXIS_REF* master_ = nullptr;
   double acceleration_ = 0.0;
 };
 
