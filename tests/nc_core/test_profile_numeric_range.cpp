@@ -196,3 +196,22 @@ TEST_CASE("a start at V with an acceleration of rounding size cruises at a = 0",
   INFO(profile_checks::to_string(f));
   CHECK(f.ok());
 }
+
+TEST_CASE("a landing onto the end velocity keeps J when 2J|v| dwarfs a squared",
+          "[profile][range]") {
+  // Fuzz finding P5: a = A+ = 4.77e-4 just below v1 = V (1.08e-18 short) with J = 9.06e9. The
+  // rounding tolerance of the final curve, taken on a² + 2Jv = 8.6e6, counted the start as on
+  // it, and the exact landing ramp's jerk a² / 2(v1 - v) was 1.05e11, 11.6 times J. Now a ramp
+  // at J (5.26e-14 s) ends at v1.
+  const double x = 0.00047679227941176469;
+  const Limits l{x, x, 0.00047679227941088969, 9059681856.0};
+  const KinematicState start{x, 0.00047679227941176361, x};
+  const Profile prof = nc::plan_velocity(start, x, l);
+  REQUIRE(prof.ok());
+  REQUIRE(prof.segment_count() == 1);
+  CHECK(prof.segment(0).j == -9059681856.0);
+  CHECK(prof.duration() == Approx(x / 9059681856.0).epsilon(1e-12));
+  Limits keep = l;
+  keep.velocity = (start.v + x * x / (2.0 * l.jerk)) * (1.0 + 1e-9);  // the forced overshoot
+  CHECK(profile_checks::check_velocity_profile(prof, start, x, keep).ok());
+}

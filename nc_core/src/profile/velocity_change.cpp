@@ -103,14 +103,16 @@ int upward(double v, double a, double v1, const Bounds& b, double sign, Sink& ou
     // Within rounding of the final curve (v_nat = v1) the rise ends at a = 0 exactly: the
     // remaining time must not jump with the square root of the rounding.
     const bool on_final = final_curve && meet2 <= k_tol;
-    if (on_final && a < 0.0 && v > v1) {
-      // Coming down onto v1 with a slightly forced overshoot: one ramp that lands exactly, its
-      // jerk a^2 / 2(v - v1) above J by at most ~4 kRel. Along that ramp the overshoot stays the
-      // same fraction of v - v1 and of k_tol, so every state sampled on it decides the same way
-      // (re-planning gives the rest of it); a ramp at J would keep the absolute overshoot while
-      // k_tol shrinks, and the decision would flip part-way.
-      const double t = 2.0 * (v1 - v) / a;
-      put(t, -a / t, 0.0, v1, true);
+    // Coming down onto v1 with a slightly forced overshoot: one ramp that lands exactly, its
+    // jerk a^2 / 2(v - v1) above J by at most ~4 kRel. Along that ramp the overshoot stays the
+    // same fraction of v - v1 and of k_tol, so every state sampled on it decides the same way
+    // (re-planning gives the rest of it); a ramp at J would keep the absolute overshoot while
+    // k_tol shrinks, and the decision would flip part-way. Only where that jerk is within the
+    // ~4 kRel: when 2J|v| dominates k_tol, "within rounding" of the final curve allows an a^2
+    // far above 2J(v - v1) (fuzz finding P5: 11.6 J), and the ramp at J below is taken instead.
+    const double landing_t = 2.0 * (v1 - v) / a;
+    if (on_final && a < 0.0 && v > v1 && -a / landing_t <= jerk * (1.0 + 8.0 * kRel)) {
+      put(landing_t, -a / landing_t, 0.0, v1, true);
       return n;
     }
     const double a_meet = on_final ? 0.0 : std::sqrt(std::max(meet2, 0.0));
