@@ -215,3 +215,21 @@ TEST_CASE("a landing onto the end velocity keeps J when 2J|v| dwarfs a squared",
   keep.velocity = (start.v + x * x / (2.0 * l.jerk)) * (1.0 + 1e-9);  // the forced overshoot
   CHECK(profile_checks::check_velocity_profile(prof, start, x, keep).ok());
 }
+
+TEST_CASE("an acceleration left at the end velocity ramps to 0 at J however short the ramp",
+          "[profile][range]") {
+  // Fuzz finding P6: from rest at a = A+ = 7.04e-9 to v1 = 30.24 mm/s with J = 5.96e8. After the
+  // hold at A+ (4.29e9 s) the velocity change took v1 as reached (the acceleration lay below its
+  // rounding tolerance, 1.3e-8) and left out the final ramp: the acceleration jumped from A+ to 0.
+  // Now the ramp of A+ / J = 1.18e-17 s ends the profile.
+  const Limits l{30.243137254883315, 7.0415291131711472e-09, 7.0415291132121761e-09,
+                 595754495.99408698};
+  const KinematicState start{7.0228844789209513e-09, 2.594760871615113e-35, 7.0415291131711472e-09};
+  const double v1 = 30.243137254872856;
+  const Profile prof = nc::plan_velocity(start, v1, l);
+  REQUIRE(prof.ok());
+  REQUIRE(prof.segment_count() == 2);
+  CHECK(prof.segment(1).j == -595754495.99408698);
+  CHECK(prof.segment(1).duration == Approx(1.1819514851367627e-17).epsilon(1e-9));
+  CHECK(profile_checks::check_velocity_profile(prof, start, v1, l).ok());
+}

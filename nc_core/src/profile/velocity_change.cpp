@@ -43,7 +43,13 @@ int upward(double v, double a, double v1, const Bounds& b, double sign, Sink& ou
   };
   for (int iter = 0; iter < kMaxChangePieces; ++iter) {
     const bool neg = v < 0.0 || (v == 0.0 && a < 0.0);
-    if ((!neg || !cross) && std::abs(a) <= tol_a && v >= v1 - tol_v) return n;
+    if ((!neg || !cross) && std::abs(a) <= tol_a && v >= v1 - tol_v) {
+      // At v1 within rounding. An acceleration left there still ramps to 0 at J (a piece of
+      // rounding-size duration): it may be all of A when J is huge against A (fuzz finding P6:
+      // A = 7e-9, J = 6e8, tol_a = 1.3e-8), and dropping it would jump a by A.
+      if (a != 0.0) put(std::abs(a) / jerk, a > 0.0 ? -jerk : jerk, 0.0, v1, true);
+      return n;
+    }
     const double cap = neg ? b.am : b.ap;
     const double k = neg ? kc : kf;
     // The curve's a reaches 0 at vk (k = 2J vk); differences to it are taken in v, where they
