@@ -66,7 +66,9 @@ struct AxisProgram {
   // Coupling programs only (see kCouplingProgram): this axis as slave.
   fb::MC_GearIn gear_in;
   fb::MC_GearOut gear_out;
-  std::size_t gear_master = 0;  // the master given at gear_in's last rising edge
+  std::size_t gear_master = 0;  // the master input of gear_in
+  std::size_t edge_master = 0;  // the master gear_in saw at its last rising edge
+  bool gear_execute_seen = false;
   std::array<fb::MC_MoveRelative, kBurst> burst;
   // Burst blocks [0, bursts) have had a rising edge; the others have never been executed, so a
   // call leaves them idle and is skipped (the blocks are most of the calls of a cycle).
@@ -115,7 +117,7 @@ fb::MC_Direction direction(fuzz::ByteReader& in) {
 }
 
 // One PLC cycle of one axis: every block once, in a fixed order (the gear blocks in coupling
-// programs only, `master` being the axis given at gear_in's last edge).
+// programs only, `master` being gear_in's master input).
 void plc_cycle(AxisProgram& a, plc::AXIS_REF& axis, const plc::AXIS_REF* master) {
   a.power(axis);
   fuzz::call_checked(a.reset, axis);
@@ -138,6 +140,8 @@ void plc_cycle(AxisProgram& a, plc::AXIS_REF& axis, const plc::AXIS_REF* master)
     (void)fb::MC_ExtSetPointGenFeed(a.feed_p, a.feed_v, a.feed_a, a.feed_direction, axis);
   }
   if (master != nullptr) {
+    if (a.gear_in.Execute && !a.gear_execute_seen) a.edge_master = a.gear_master;
+    a.gear_execute_seen = a.gear_in.Execute;
     a.gear_in(*master, axis);
     if (const char* broken = fuzz::broken_output_rule(a.gear_in)) fuzz::fail(broken);
     if (a.gear_in.InGear && !a.gear_in.Busy) fuzz::fail("InGear without Busy");
@@ -268,9 +272,13 @@ struct Program {
       if (region.allocations() != 0) fuzz::fail("allocation in the PLC calls or the NC cycle");
     }
     for (std::size_t i = 0; i < axes.size(); ++i) {
-      // While gear_in shows InGear the coupling in force is the one of its last edge.
+      // The coupling in force is gear_in's last command (master: that edge's) while the slave's
+      // CmdNo is that command's number and the block shows InGear; otherwise unknown here (an
+      // edge just posted, or refused while an older coupling holds).
       const AxisProgram& a = programs[i];
-      watches[i].follow(coupling && a.gear_in.InGear ? &axes[a.gear_master]->NcToPlc : nullptr);
+      const bool known =
+          coupling && a.gear_in.InGear && axes[i]->NcToPlc.CmdNo == a.gear_in.command_number();
+      watches[i].follow(known ? &axes[a.edge_master]->NcToPlc : nullptr);
       if (fuzz::g_trace) {
         const plc::NCTOPLC_AXIS_REF& n = axes[i]->NcToPlc;
         std::fprintf(stderr, "  [%d] axis %zu p %.9g v %.9g a %.9g err 0x%X cmd %u/%u\n", cycles, i,
@@ -384,7 +392,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
         // Coupling programs: this axis as slave of any axis (itself too), any ratio.
         a.gear_in.RatioNumerator = in.number();
         a.gear_in.RatioDenominator = in.flag() ? in.u16() : 1;
-        if (!a.gear_in.Execute) a.gear_master = in.below(n_axes);
+        a.gear_master = in.below(n_axes);
         a.gear_in.Execute = !a.gear_in.Execute;
         break;
       case 13:
