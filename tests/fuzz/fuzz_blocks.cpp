@@ -67,8 +67,7 @@ struct AxisProgram {
   fb::MC_GearIn gear_in;
   fb::MC_GearOut gear_out;
   std::size_t gear_master = 0;  // the master input of gear_in
-  std::size_t edge_master = 0;  // the master gear_in saw at its last rising edge
-  bool gear_execute_seen = false;
+  std::size_t edge_master = 0;  // the master input when gear_in posted its last command
   std::array<fb::MC_MoveRelative, kBurst> burst;
   // Burst blocks [0, bursts) have had a rising edge; the others have never been executed, so a
   // call leaves them idle and is skipped (the blocks are most of the calls of a cycle).
@@ -140,9 +139,10 @@ void plc_cycle(AxisProgram& a, plc::AXIS_REF& axis, const plc::AXIS_REF* master)
     (void)fb::MC_ExtSetPointGenFeed(a.feed_p, a.feed_v, a.feed_a, a.feed_direction, axis);
   }
   if (master != nullptr) {
-    if (a.gear_in.Execute && !a.gear_execute_seen) a.edge_master = a.gear_master;
-    a.gear_execute_seen = a.gear_in.Execute;
+    // An edge the block takes posts a new command (one while Busy is ignored).
+    const uint16_t before = a.gear_in.command_number();
     a.gear_in(*master, axis);
+    if (a.gear_in.command_number() != before) a.edge_master = a.gear_master;
     if (const char* broken = fuzz::broken_output_rule(a.gear_in)) fuzz::fail(broken);
     if (a.gear_in.InGear && !a.gear_in.Busy) fuzz::fail("InGear without Busy");
     fuzz::call_checked(a.gear_out, axis);
@@ -279,6 +279,11 @@ struct Program {
       const bool known =
           coupling && a.gear_in.InGear && axes[i]->NcToPlc.CmdNo == a.gear_in.command_number();
       watches[i].follow(known ? &axes[a.edge_master]->NcToPlc : nullptr);
+      if (fuzz::g_trace && coupling) {
+        std::fprintf(stderr, "  [%d] axis %zu gear: InGear %d number %u master %zu ratio %.17g\n",
+                     cycles, i, a.gear_in.InGear ? 1 : 0, a.gear_in.command_number(), a.edge_master,
+                     axes[i]->NcToPlc.GearRatio);
+      }
       if (fuzz::g_trace) {
         const plc::NCTOPLC_AXIS_REF& n = axes[i]->NcToPlc;
         std::fprintf(stderr, "  [%d] axis %zu p %.9g v %.9g a %.9g err 0x%X cmd %u/%u\n", cycles, i,
