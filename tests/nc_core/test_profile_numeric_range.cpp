@@ -27,6 +27,20 @@ void check_refused(const Profile& prof, ErrorCode code) {
   CHECK((std::isfinite(x.p) && std::isfinite(x.v) && std::isfinite(x.a)));
 }
 
+// Planned, and within the planner tests' contract (`relief` for a start outside the limits).
+void check_position_planned(const KinematicState& s, double target, const Limits& l,
+                            const profile_checks::StartRelief& relief = {}) {
+  const Profile prof = nc::plan_position(s, target, l);
+  REQUIRE(prof.ok());
+  CHECK(profile_checks::check_position_profile(prof, s, target, l, {}, relief).ok());
+}
+void check_velocity_planned(const KinematicState& s, double v1, const Limits& l,
+                            const profile_checks::StartRelief& relief = {}) {
+  const Profile prof = nc::plan_velocity(s, v1, l);
+  REQUIRE(prof.ok());
+  CHECK(profile_checks::check_velocity_profile(prof, s, v1, l, {}, relief).ok());
+}
+
 Limits with_field(Limits l, int field, double value) {
   (field == 0   ? l.velocity
    : field == 1 ? l.acceleration
@@ -153,10 +167,7 @@ TEST_CASE("a start whose braking distance is above 1e15 is refused with 0x4F70",
                 ErrorCode::kStartFarOutsideLimits);
   check_refused(nc::plan_velocity(fast, 0.0, Limits{2000.0, 5000.0, 1.9e-9, 50000.0}),
                 ErrorCode::kStartFarOutsideLimits);
-  const Limits slow_brake{2000.0, 5000.0, 2.1e-9, 50000.0};
-  const Profile vel = nc::plan_velocity(fast, 0.0, slow_brake);
-  REQUIRE(vel.ok());
-  CHECK(profile_checks::check_velocity_profile(vel, fast, 0.0, slow_brake).ok());
+  check_velocity_planned(fast, 0.0, Limits{2000.0, 5000.0, 2.1e-9, 50000.0});
 }
 
 TEST_CASE("a start 1e6 times above V (override 1 ppm at full speed) is planned",
@@ -166,12 +177,8 @@ TEST_CASE("a start 1e6 times above V (override 1 ppm at full speed) is planned",
   const KinematicState full{0.0, 2000.0, 0.0};
   profile_checks::StartRelief relief;
   relief.over_speed = true;
-  const Profile vel = nc::plan_velocity(full, 0.002, slow);
-  REQUIRE(vel.ok());
-  CHECK(profile_checks::check_velocity_profile(vel, full, 0.002, slow, {}, relief).ok());
-  const Profile pos = nc::plan_position(full, 1000.0, slow);
-  REQUIRE(pos.ok());
-  CHECK(profile_checks::check_position_profile(pos, full, 1000.0, slow, {}, relief).ok());
+  check_velocity_planned(full, 0.002, slow, relief);
+  check_position_planned(full, 1000.0, slow, relief);
 }
 
 TEST_CASE("a start at V with an acceleration of rounding size cruises at a = 0",
@@ -232,4 +239,17 @@ TEST_CASE("an acceleration left at the end velocity ramps to 0 at J however shor
   CHECK(prof.segment(1).j == -595754495.99408698);
   CHECK(prof.segment(1).duration == Approx(1.1819514851367627e-17).epsilon(1e-9));
   CHECK(profile_checks::check_velocity_profile(prof, start, v1, l).ok());
+}
+
+TEST_CASE("a long hold at A- ends where the bound changes, not past it", "[profile][range]") {
+  // Fuzz finding P7: from v = -8578 mm/s (1.8e7 times V) with a 3e-14 above A- = 4.7679e-4 and a
+  // smaller A+ = 4.7584e-4, J = 8.6e9. The hold was timed at A- but ran at the start's a: after
+  // 1.8e7 s it had crossed v = 0 by 2.7e-10 mm/s, still at A- where A+ applies.
+  const Limits l{0.00047679227941176469, 0.00047583860509535844, 0.00047679227941088969,
+                 8589934592.0};
+  const KinematicState start{0.00047679227941355493, -8577.9999009073563, 0.00047679227941089749};
+  profile_checks::StartRelief relief;
+  relief.over_speed = true;
+  relief.over_acceleration = true;
+  check_velocity_planned(start, 0.00047679227941176469, l, relief);
 }

@@ -88,12 +88,16 @@ int upward(double v, double a, double v1, const Bounds& b, double sign, Sink& ou
       continue;
     }
     if (a >= cap * (1.0 - kRel)) {
-      // At the bound: hold it until the -J curve is met (or v reaches 0).
+      // At the bound: hold it until the -J curve is met (or v reaches 0). The profile holds the
+      // acceleration it has, within kRel of the bound: the times are taken at that value, else a
+      // long hold drifts past its end velocity (fuzz finding P7: a 3e-14 above A- for 1.8e7 s
+      // crossed v = 0 by 2.7e-10 still at A-, above the smaller A+ beyond).
+      const double held = a;
       a = cap;
       const double v_curve = vk - cap * cap / (2.0 * jerk);
-      const double t_curve = std::max((v_curve - v) / cap, 0.0);
+      const double t_curve = std::max((v_curve - v) / held, 0.0);
       if (neg) {
-        const double t_zero = -v / cap;
+        const double t_zero = -v / held;
         if (t_zero < t_curve) {
           put(t_zero, 0.0, cap, 0.0, true);
           continue;
