@@ -87,9 +87,9 @@ class AxisWatch {
 
   // A coupled slave (StateDWord bit kStateCoupled) follows its master: its set velocity and
   // acceleration are GearRatio times the master's of the same cycle (docs/behaviour.md, "Slave
-  // axes"), checked instead of its own limits while it is operational (without its controller
-  // enable the set position follows the actual one). `master` is the master's image, nullptr
-  // when the PLC does not know it. Set before every check().
+  // axes"), checked instead of its own limits while both axes are operational (see
+  // check_following). `master` is the master's image, nullptr when the PLC does not know it.
+  // Set before every check().
   void follow(const plc::NCTOPLC_AXIS_REF* master) noexcept { master_ = master; }
 
   // --- After the PLC's calls of one cycle: the commands it posted (kernel drained the rest).
