@@ -138,7 +138,7 @@ std::string_view error_text(ErrorCode code) noexcept {
     case E::kCouplingLoop:
       return "coupling would close a loop (or master = slave)";
     case E::kStartFarOutsideLimits:
-      return "start state too far outside the limits of the move (1e9 times, or a stop longer than "
+      return "start state too far outside the limits of the move (2e6 times, or a stop longer than "
              "1e15)";
     case E::kHliFractOnReferencedAxis:
       return "FRACT coupling: the axis cannot stop before a software limit";

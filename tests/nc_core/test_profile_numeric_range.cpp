@@ -120,7 +120,7 @@ TEST_CASE("problems at the edges of the range are planned and keep the contract"
   CHECK(profile_checks::check_position_profile(c, far, 1e12, large).ok());
 }
 
-TEST_CASE("a start more than 1e9 times outside the limits is refused with 0x4F70",
+TEST_CASE("a start more than 2e6 times outside the limits is refused with 0x4F70",
           "[profile][range]") {
   CHECK(plc::to_id(ErrorCode::kStartFarOutsideLimits) == 0x4F70U);
   // The kept fuzz input of P2: a = -5.96e8 against limits of 7.04e-9 (8.5e16 times A) broke
@@ -132,22 +132,22 @@ TEST_CASE("a start more than 1e9 times outside the limits is refused with 0x4F70
   check_refused(nc::plan_velocity(p2, 0.0, small), ErrorCode::kStartFarOutsideLimits);
   check_refused(nc::plan_position(p2, tiny, 0.5 * tiny, small), ErrorCode::kStartFarOutsideLimits);
 
-  // |a| above 1e9·max(A+, A-): A± = 1, a = 1.01e9 (its forced velocity a²/2J = 5.1e5 mm/s is
-  // far below 1e9·V with J = 1e12).
+  // |a| above 2e6·max(A+, A-): A± = 1, a = 2.02e6 (its forced velocity a²/2J = 2 mm/s is far
+  // below 2e6·V with J = 1e12).
   const Limits soft{2000.0, 1.0, 1.0, 1e12};
-  check_refused(nc::plan_position({0.0, 0.0, 1.01e9}, 100.0, soft),
+  check_refused(nc::plan_position({0.0, 0.0, 2.02e6}, 100.0, soft),
                 ErrorCode::kStartFarOutsideLimits);
-  check_refused(nc::plan_velocity({0.0, 0.0, -1.01e9}, 0.0, soft),
+  check_refused(nc::plan_velocity({0.0, 0.0, -2.02e6}, 0.0, soft),
                 ErrorCode::kStartFarOutsideLimits);
-  // |v| above 1e9·V: V = 1e-3, v = 1.01e6 mm/s.
+  // |v| above 2e6·V: V = 1e-3, v = 2020 mm/s.
   const Limits creep{1e-3, 5000.0, 5000.0, 50000.0};
-  check_refused(nc::plan_position({0.0, 1.01e6, 0.0}, 100.0, creep),
+  check_refused(nc::plan_position({0.0, 2020.0, 0.0}, 100.0, creep),
                 ErrorCode::kStartFarOutsideLimits);
-  check_refused(nc::plan_velocity({0.0, -1.01e6, 0.0}, 0.0, creep),
+  check_refused(nc::plan_velocity({0.0, -2020.0, 0.0}, 0.0, creep),
                 ErrorCode::kStartFarOutsideLimits);
-  // The velocity a forces whatever is done, v + a·|a|/2J, above 1e9·V: kLimits (V 2000,
-  // J 50000), a = 5e8 (1e5 times A) forces 2.5e12 mm/s > 2e12.
-  check_refused(nc::plan_position({0.0, 0.0, 5e8}, 100.0, kLimits),
+  // The velocity a forces whatever is done, v + a·|a|/2J, above 2e6·V: kLimits (V 2000,
+  // J 50000), a = 2.1e7 (4200 times A) forces 4.41e9 mm/s > 4e9.
+  check_refused(nc::plan_position({0.0, 0.0, 2.1e7}, 100.0, kLimits),
                 ErrorCode::kStartFarOutsideLimits);
 }
 
@@ -242,14 +242,31 @@ TEST_CASE("an acceleration left at the end velocity ramps to 0 at J however shor
 }
 
 TEST_CASE("a long hold at A- ends where the bound changes, not past it", "[profile][range]") {
-  // Fuzz finding P7: from v = -8578 mm/s (1.8e7 times V) with a 3e-14 above A- = 4.7679e-4 and a
-  // smaller A+ = 4.7584e-4, J = 8.6e9. The hold was timed at A- but ran at the start's a: after
-  // 1.8e7 s it had crossed v = 0 by 2.7e-10 mm/s, still at A- where A+ applies.
+  // Fuzz finding P7: from v = -8578 mm/s with a 3e-14 above A- = 4.7679e-4 and a smaller
+  // A+ = 4.7584e-4, J = 8.6e9. The hold was timed at A- but ran at the start's a: after 1.8e7 s
+  // it had crossed v = 0 by 2.7e-10 mm/s, still at A- where A+ applies. That start (1.8e7 times
+  // V) is now refused (P8); from v = -900 (1.9e6 times V) the hold of 1.9e6 s drifted 2.8e-11
+  // past v = 0 the same way.
   const Limits l{0.00047679227941176469, 0.00047583860509535844, 0.00047679227941088969,
                  8589934592.0};
-  const KinematicState start{0.00047679227941355493, -8577.9999009073563, 0.00047679227941089749};
+  const KinematicState start{0.00047679227941355493, -900.0, 0.00047679227941089749};
   profile_checks::StartRelief relief;
   relief.over_speed = true;
   relief.over_acceleration = true;
   check_velocity_planned(start, 0.00047679227941176469, l, relief);
+}
+
+TEST_CASE("a start acceleration 1e8 times A is refused: its rounding would pass A+",
+          "[profile][range]") {
+  // Fuzz finding P8: a = -0.695 against A± = 7.3e-9 / 7.0e-9 (1e8 times), J = 2. Ramping a back
+  // by 0.695 leaves a few ulp of 0.695, 1e-8 of A: the next segment began 1e-8 above A+.
+  const Limits l{31.24609375, 7.2750489832789158e-09, 7.0415318020474887e-09, 2.0004863739013672};
+  check_refused(
+      nc::plan_position({8.2572993763189198e-317, 0.12012095731847426, -0.69521963456097768},
+                        0.00047679227918706601, l),
+      ErrorCode::kStartFarOutsideLimits);
+  // 1.9e6 times A+ is planned within the contract.
+  profile_checks::StartRelief relief;
+  relief.over_acceleration = true;
+  check_velocity_planned({0.0, 0.0, -1.9e6 * 7.2750489832789158e-09}, 0.0, l, relief);
 }

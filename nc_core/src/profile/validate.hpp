@@ -61,10 +61,12 @@ inline ErrorCode check_limits(const Limits& l) noexcept {
 // How far outside its limits a start may lie (fuzz finding P2): |a| at most kMaxStartRatio times
 // max(A+, A-), and |v| as well as the velocity the start's acceleration forces whatever is done,
 // |v + a·|a| / 2J|, at most kMaxStartRatio times V. Beyond, bringing the start back takes
-// kMaxStartRatio times the problem's own times and kMaxStartRatio² its distances, and a double no
-// longer keeps the profile continuous (a = 1e17·A broke it at t = 3.6e33 s). The kernel's starts
-// stay far inside (override 1 ppm from full speed: 1e6), the outside-the-limits suites use <= 3.
-inline constexpr double kMaxStartRatio = 1e9;
+// kMaxStartRatio times the problem's own times and kMaxStartRatio² its distances (a = 1e17·A
+// broke continuity at t = 3.6e33 s), and the state brought back keeps the rounding of the start's
+// size: a few ulp of |a0| is ratio · 2.2e-16 of A, above the planner's 1e-9 from a ratio of about
+// 4e6 (fuzz finding P8: a = 1e8·A ended its ramp 1e-8 above A+). The kernel's farthest start
+// from an override alone (1 ppm at full speed) is 1e6; the outside-the-limits suites use <= 3.
+inline constexpr double kMaxStartRatio = 2e6;
 // The braking distance from the start, speed² / 2A- with that speed, at most kMaxStopDistance
 // (fuzz finding P4: v = 1.6e6 against A- = 7e-9 must travel 1.9e26 to stop, and the profile broke
 // continuity by 1e29). 1000 times the position range; the planner suites stay below 5e11.
