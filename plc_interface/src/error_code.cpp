@@ -137,6 +137,11 @@ std::string_view error_text(ErrorCode code) noexcept {
       return "two-speed axis: distance to the target not larger than the braking distance";
     case E::kCouplingLoop:
       return "coupling would close a loop (or master = slave)";
+    case E::kGearRatioOutOfRange:
+      return "gear ratio above 1e6 in size";
+    case E::kStartFarOutsideLimits:
+      return "start state too far outside the limits of the move (2e6 times, or a stop longer than "
+             "1e15)";
     case E::kHliFractOnReferencedAxis:
       return "FRACT coupling: the axis cannot stop before a software limit";
     case E::kHliChangeWhileMoving:

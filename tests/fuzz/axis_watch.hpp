@@ -5,7 +5,8 @@
 //    limit (A+, A-, emergency deceleration), each widened only by what the PLC itself asked for
 //    and docs/behaviour.md documents as allowed: accelerations / decelerations given to a
 //    move, MC_Halt or MC_Stop; a compensation's VK and AK± on top of the basic motion (B7); the
-//    fed external set values (B8). The widening lasts until the axis rests again;
+//    fed external set values (B8). The widening lasts until the axis rests again. A coupled
+//    slave instead has GearRatio times its master's set velocity and acceleration (C1, C2);
 //  - every command number posted is answered (leaves kPosted) within 2 NC cycles, its answer
 //    slot is never lost, the states only move forward (posted → active → reached → an outcome),
 //    and an outcome, once given, never changes.
@@ -18,13 +19,14 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "fail.hpp"
 #include "nc_core/axis_config.hpp"
 #include "plc_interface/axis_ref.hpp"
 
 namespace fuzz {
 
 // The first NcToPlc double that is not finite, by name; nullptr when all are.
-inline const char* non_finite_field(const plc::NCTOPLC_AXIS_REF& n) noexcept {
+FUZZ_CHECKER inline const char* non_finite_field(const plc::NCTOPLC_AXIS_REF& n) noexcept {
   struct Field {
     const char* name;
     double value;
@@ -83,8 +85,15 @@ class AxisWatch {
     acceleration_ += std::fabs(a);
   }
 
+  // A coupled slave (StateDWord bit kStateCoupled) follows its master: its set velocity and
+  // acceleration are GearRatio times the master's of the same cycle (docs/behaviour.md, "Slave
+  // axes"), checked instead of its own limits while both axes are operational (see
+  // check_following). `master` is the master's image, nullptr when the PLC does not know it.
+  // Set before every check().
+  void follow(const plc::NCTOPLC_AXIS_REF* master) noexcept { master_ = master; }
+
   // --- After the PLC's calls of one cycle: the commands it posted (kernel drained the rest).
-  void posted(const plc::AXIS_REF& axis) noexcept {
+  FUZZ_CHECKER void posted(const plc::AXIS_REF& axis) noexcept {
     const std::size_t now = axis.Mailbox.pending();
     for (std::size_t i = pending_; i < now; ++i) {
       ++posted_total_;
@@ -98,13 +107,19 @@ class AxisWatch {
   }
 
   // --- After the NC cycle: the invariants. nullptr when all hold.
-  const char* check(const plc::AXIS_REF& axis) noexcept {
+  FUZZ_CHECKER const char* check(const plc::AXIS_REF& axis) noexcept {
     pending_ = axis.Mailbox.pending();
     const plc::NCTOPLC_AXIS_REF& n = axis.NcToPlc;
     if (non_finite_field(n) != nullptr) return "NcToPlc double not finite";
-    if (std::fabs(n.SetVelo) > velocity_ * (1.0 + 1e-9) + 1e-9) return "set velocity above limit";
-    if (std::fabs(n.SetAcc) > acceleration_ * (1.0 + 1e-6) + 1e-6) {
-      return "set acceleration above limit";
+    if (plc::test_bit(n.StateDWord, plc::kStateCoupled)) {
+      if (const char* broken = check_following(n)) return broken;
+    } else {
+      if (std::fabs(n.SetVelo) > velocity_ * (1.0 + 1e-9) + 1e-9) {
+        return "set velocity above limit";
+      }
+      if (std::fabs(n.SetAcc) > acceleration_ * (1.0 + 1e-6) + 1e-6) {
+        return "set acceleration above limit";
+      }
     }
     const bool resting = n.SetVelo == 0.0 && n.SetAcc == 0.0 &&
                          !plc::test_bit(n.StateDWord, plc::kStateHasJob) &&
@@ -127,6 +142,27 @@ class AxisWatch {
     int age = 0;  // NC cycles since it was posted
     bool live = false;
   };
+
+  static bool near(double x, double y) noexcept {
+    return std::fabs(x - y) <= 1e-9 * (std::fabs(x) + std::fabs(y)) + 1e-9;
+  }
+  const char* check_following(const plc::NCTOPLC_AXIS_REF& n) const noexcept {
+    if (n.GearRatio == 0.0) return "a coupled slave shows no gear ratio";
+    // Not checked while either axis is not operational: a master without its controller enable
+    // publishes set values that follow its actual position after its slaves sampled it, and the
+    // reaction of the slaves to that is SPEC C7, not built yet (docs/behaviour.md).
+    if (master_ == nullptr || !plc::test_bit(n.StateDWord, plc::kStateOperational) ||
+        !plc::test_bit(master_->StateDWord, plc::kStateOperational)) {
+      return nullptr;
+    }
+    if (!near(n.SetVelo, n.GearRatio * master_->SetVelo)) {
+      return "slave set velocity is not gear ratio x master set velocity";
+    }
+    if (!near(n.SetAcc, n.GearRatio * master_->SetAcc)) {
+      return "slave set acceleration is not gear ratio x master set acceleration";
+    }
+    return nullptr;
+  }
 
   static bool usable(double x) noexcept { return std::isfinite(x) && x > 0.0; }
   void widen_acceleration(double x) noexcept {
@@ -152,7 +188,7 @@ class AxisWatch {
     }
   }
 
-  const char* check_answers(const plc::CommandMailbox& mailbox) noexcept {
+  FUZZ_CHECKER const char* check_answers(const plc::CommandMailbox& mailbox) noexcept {
     for (Tracked& t : tracked_) {
       if (!t.live) continue;
       ++t.age;
@@ -191,6 +227,7 @@ class AxisWatch {
   double delay_;
   double stop_jerk_;
   double velocity_ = 0.0;
+  const plc::NCTOPLC_AXIS_REF* master_ = nullptr;
   double acceleration_ = 0.0;
 };
 

@@ -13,7 +13,7 @@
 namespace fuzz {
 
 template <class Block>
-const char* broken_output_rule(const Block& b) noexcept {
+FUZZ_CHECKER const char* broken_output_rule(const Block& b) noexcept {
   bool done = false;
   bool active = false;
   bool aborted = false;

@@ -4,12 +4,15 @@
 // override toggled (through MC_Power, MC_SetOverride and raw writes of PlcToNc.Override),
 // GearRatio1 written, external setpoint packets fed, bursts of more commands than the mailbox
 // holds, and faults injected: a feed enable or the controller enable lost, and axes whose drive
-// saturates at 50 mm/s so that a fast move runs into its following-error limit (0x4550).
+// saturates at 50 mm/s so that a fast move runs into its following-error limit (0x4550). A
+// coupling program (bit 7 of the first byte) adds MC_GearIn (any master, ratio, denominator) and
+// MC_GearOut on every axis; a slave in gear is checked to follow its master.
 // Every PLC cycle calls every block of every axis once, then the NC cycle runs. Checked at every
 // cycle, each a crash when broken: the block output rules (block_rules.hpp) after every call, the
 // axis invariants (axis_watch.hpp: finite image, set velocity and acceleration within the limits,
 // every command answered within 2 cycles and never twice differently), and no allocation in the
 // PLC calls and the NC cycle. Only the public API is used (fb blocks, nc::Kernel, AXIS_REF).
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -33,6 +36,12 @@ constexpr std::size_t kMaxAxes = 4;
 constexpr std::size_t kBurst = 20;  // more than CommandMailbox::kQueueCapacity (16)
 constexpr int kMaxCycles = 3000;    // per input, keeps an execution short
 constexpr std::size_t kExecuteKinds = 13;
+// Bit 7 of the first byte (the NC cycle) makes a coupling program: two more operations, MC_GearIn
+// (any master, any ratio) and MC_GearOut, on every axis. Without it a program decodes as before,
+// so the kept inputs keep their meaning.
+constexpr uint8_t kCouplingProgram = 0x80U;
+constexpr std::size_t kPlainOps = 12;
+constexpr std::size_t kCouplingOps = 14;
 
 // The blocks of one axis and the PLC program's own values for it.
 struct AxisProgram {
@@ -54,7 +63,15 @@ struct AxisProgram {
   fb::MC_ReadStatus status;
   fb::MC_ReadActualPosition actual_position;
   fb::MC_ReadAxisError axis_error;
+  // Coupling programs only (see kCouplingProgram): this axis as slave.
+  fb::MC_GearIn gear_in;
+  fb::MC_GearOut gear_out;
+  std::size_t gear_master = 0;  // the master input of gear_in
+  std::size_t edge_master = 0;  // the master input when gear_in posted its last command
   std::array<fb::MC_MoveRelative, kBurst> burst;
+  // Burst blocks [0, bursts) have had a rising edge; the others have never been executed, so a
+  // call leaves them idle and is skipped (the blocks are most of the calls of a cycle).
+  std::size_t bursts = 0;
   double feed_p = 0.0, feed_v = 0.0, feed_a = 0.0;
   int32_t feed_direction = 0;
   bool feeding = false;
@@ -98,8 +115,9 @@ fb::MC_Direction direction(fuzz::ByteReader& in) {
   return static_cast<fb::MC_Direction>(b < 200 ? 1 + b % 4 : static_cast<int8_t>(b));
 }
 
-// One PLC cycle of one axis: every block once, in a fixed order.
-void plc_cycle(AxisProgram& a, plc::AXIS_REF& axis) {
+// One PLC cycle of one axis: every block once, in a fixed order (the gear blocks in coupling
+// programs only, `master` being gear_in's master input).
+void plc_cycle(AxisProgram& a, plc::AXIS_REF& axis, const plc::AXIS_REF* master) {
   a.power(axis);
   fuzz::call_checked(a.reset, axis);
   fuzz::call_checked(a.absolute, axis);
@@ -115,10 +133,19 @@ void plc_cycle(AxisProgram& a, plc::AXIS_REF& axis) {
   fuzz::call_checked(a.abort_superposition, axis);
   fuzz::call_checked(a.ext_enable, axis);
   fuzz::call_checked(a.ext_disable, axis);
-  for (auto& b : a.burst)
-    fuzz::call_checked(b, axis);
+  for (std::size_t i = 0; i < a.bursts; ++i)
+    fuzz::call_checked(a.burst[i], axis);
   if (a.feeding) {
     (void)fb::MC_ExtSetPointGenFeed(a.feed_p, a.feed_v, a.feed_a, a.feed_direction, axis);
+  }
+  if (master != nullptr) {
+    // An edge the block takes posts a new command (one while Busy is ignored).
+    const uint16_t before = a.gear_in.command_number();
+    a.gear_in(*master, axis);
+    if (a.gear_in.command_number() != before) a.edge_master = a.gear_master;
+    if (const char* broken = fuzz::broken_output_rule(a.gear_in)) fuzz::fail(broken);
+    if (a.gear_in.InGear && !a.gear_in.Busy) fuzz::fail("InGear without Busy");
+    fuzz::call_checked(a.gear_out, axis);
   }
   a.status(axis);
   a.actual_position(axis);
@@ -225,6 +252,7 @@ struct Program {
   std::vector<AxisProgram> programs;
   std::vector<fuzz::AxisWatch> watches;
   int cycles = 0;
+  bool coupling = false;
 
   // One tick: the PLC calls every block of every axis, then one NC cycle; then the checks.
   void tick() {
@@ -237,13 +265,25 @@ struct Program {
              plc::test_bit(axes[i]->NcToPlc.StateDWord, plc::kStateExtSetPointGenEnabled))) {
           watches[i].allow_external(a.feed_v, a.feed_a);
         }
-        plc_cycle(a, *axes[i]);
+        plc_cycle(a, *axes[i], coupling ? axes[a.gear_master] : nullptr);
         watches[i].posted(*axes[i]);
       }
       kernel.cycle();
       if (region.allocations() != 0) fuzz::fail("allocation in the PLC calls or the NC cycle");
     }
     for (std::size_t i = 0; i < axes.size(); ++i) {
+      // The coupling in force is gear_in's last command (master: that edge's) while the slave's
+      // CmdNo is that command's number and the block shows InGear; otherwise unknown here (an
+      // edge just posted, or refused while an older coupling holds).
+      const AxisProgram& a = programs[i];
+      const bool known =
+          coupling && a.gear_in.InGear && axes[i]->NcToPlc.CmdNo == a.gear_in.command_number();
+      watches[i].follow(known ? &axes[a.edge_master]->NcToPlc : nullptr);
+      if (fuzz::g_trace && coupling) {
+        std::fprintf(stderr, "  [%d] axis %zu gear: InGear %d number %u master %zu ratio %.17g\n",
+                     cycles, i, a.gear_in.InGear ? 1 : 0, a.gear_in.command_number(), a.edge_master,
+                     axes[i]->NcToPlc.GearRatio);
+      }
       if (fuzz::g_trace) {
         const plc::NCTOPLC_AXIS_REF& n = axes[i]->NcToPlc;
         std::fprintf(stderr, "  [%d] axis %zu p %.9g v %.9g a %.9g err 0x%X cmd %u/%u\n", cycles, i,
@@ -274,7 +314,8 @@ nc::KernelConfig kernel_config(uint8_t b) {
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
   fuzz::g_trace = std::getenv("FUZZ_TRACE") != nullptr;
   fuzz::ByteReader in(data, size);
-  Program p{nc::Kernel(kernel_config(in.byte())), {}, {}, {}, 0};
+  const uint8_t first = in.byte();
+  Program p{nc::Kernel(kernel_config(first)), {}, {}, {}, 0, (first & kCouplingProgram) != 0};
   const std::size_t n_axes = 1 + in.below(kMaxAxes);
   p.programs.resize(n_axes);
   for (std::size_t i = 0; i < n_axes; ++i) {
@@ -291,7 +332,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
     const std::size_t axis_index = static_cast<std::size_t>(&a - p.programs.data());
     plc::AXIS_REF& axis = *p.axes[axis_index];
     fuzz::AxisWatch& watch = p.watches[axis_index];
-    const std::size_t op = in.below(12);
+    const std::size_t op = in.below(p.coupling ? kCouplingOps : kPlainOps);
     if (fuzz::g_trace) std::fprintf(stderr, "\nop %zu axis %zu:", op, axis_index);
     switch (op) {
       case 0:
@@ -335,6 +376,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
           a.burst[i].Velocity = velocity;
           a.burst[i].Execute = i < k;
         }
+        a.bursts = std::max(a.bursts, k);
         break;
       }
       case 9:
@@ -350,6 +392,16 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
             a.power.Enable = !a.power.Enable;
             break;
         }
+        break;
+      case 12:
+        // Coupling programs: this axis as slave of any axis (itself too), any ratio.
+        a.gear_in.RatioNumerator = in.number();
+        a.gear_in.RatioDenominator = in.flag() ? in.u16() : 1;
+        a.gear_master = in.below(n_axes);
+        a.gear_in.Execute = !a.gear_in.Execute;
+        break;
+      case 13:
+        a.gear_out.Execute = !a.gear_out.Execute;
         break;
       default: {
         const std::size_t k = 1 + in.below(64);

@@ -101,6 +101,18 @@ def fault(axis, which):
     return bytes([axis, 9, which])
 
 
+def gear_in(slave, master, ratio, denominator=None):
+    """Toggles the slave's MC_GearIn Execute (a rising edge when it was off): coupling programs."""
+    den = bytes([0]) if denominator is None else bytes([1]) + struct.pack(">H", denominator)
+    return bytes([slave, 12]) + num(ratio) + den + bytes([master])
+
+
+def gear_out(slave):
+    return bytes([slave, 13])
+
+
+COUPLING = 0x80  # first byte: a coupling program (MC_GearIn / MC_GearOut operations)
+
 BLOCKS = {
     "move_absolute": blocks_program(ops=[run(0, 3), absolute(0, 500, 1000), run(0, 64), run(0, 64)]),
     "move_and_new_pos": blocks_program(ops=[run(0, 3), absolute(0, 3000, 2000), run(0, 64),
@@ -128,6 +140,16 @@ BLOCKS = {
                                 ops=[run(0, 3), absolute(0, 500, 1000), absolute(1, -300, 800),
                                      velocity(2, 200, 2), relative(3, 50, 100), run(0, 64),
                                      run(1, 64)]),
+    "coupling_star": blocks_program(cycle=COUPLING, variants=(0x00, 0x00, 0x02),
+                                    ops=[run(0, 3), gear_in(1, 0, 2), gear_in(2, 0, -0.5),
+                                         run(0, 3), absolute(0, 500, 1000), run(0, 64), run(0, 64),
+                                         gear_out(1), gear_out(2), run(0, 3)]),
+    "coupling_cascade": blocks_program(cycle=COUPLING, variants=(0x00, 0x00, 0x00, 0x80),
+                                       ops=[run(0, 3), gear_in(1, 0, 1.5), gear_in(2, 1, 3, 4),
+                                            gear_in(3, 2, 0.1), gear_in(0, 3, 1), run(0, 3),
+                                            velocity(0, 500), run(0, 40), gear_in(1, 0, 1.5),
+                                            gear_in(1, 0, "huge"), run(0, 20), stop(0), run(0, 64),
+                                            gear_out(3), run(0, 3)]),
     "bad_inputs": blocks_program(ops=[run(0, 3), absolute(0, "nan", 1000), run(0, 3),
                                      absolute(0, 100, "inf"), run(0, 3), absolute(0, 100, -5),
                                      run(0, 3), absolute(0, "huge", 1000), run(0, 3),

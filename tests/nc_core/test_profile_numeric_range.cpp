@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "nc_core/profile.hpp"
+#include "plc_interface/error_code.hpp"
 #include "profile_checks.hpp"
 
 namespace {
@@ -24,6 +25,20 @@ void check_refused(const Profile& prof, ErrorCode code) {
   CHECK(std::isfinite(prof.duration()));
   const KinematicState x = prof.at(0.5);
   CHECK((std::isfinite(x.p) && std::isfinite(x.v) && std::isfinite(x.a)));
+}
+
+// Planned, and within the planner tests' contract (`relief` for a start outside the limits).
+void check_position_planned(const KinematicState& s, double target, const Limits& l,
+                            const profile_checks::StartRelief& relief = {}) {
+  const Profile prof = nc::plan_position(s, target, l);
+  REQUIRE(prof.ok());
+  CHECK(profile_checks::check_position_profile(prof, s, target, l, {}, relief).ok());
+}
+void check_velocity_planned(const KinematicState& s, double v1, const Limits& l,
+                            const profile_checks::StartRelief& relief = {}) {
+  const Profile prof = nc::plan_velocity(s, v1, l);
+  REQUIRE(prof.ok());
+  CHECK(profile_checks::check_velocity_profile(prof, s, v1, l, {}, relief).ok());
 }
 
 Limits with_field(Limits l, int field, double value) {
@@ -103,4 +118,155 @@ TEST_CASE("problems at the edges of the range are planned and keep the contract"
   const Profile c = nc::plan_position(far, 1e12, large);
   REQUIRE(c.ok());
   CHECK(profile_checks::check_position_profile(c, far, 1e12, large).ok());
+}
+
+TEST_CASE("a start more than 2e6 times outside the limits is refused with 0x4F70",
+          "[profile][range]") {
+  CHECK(plc::to_id(ErrorCode::kStartFarOutsideLimits) == 0x4F70U);
+  // The kept fuzz input of P2: a = -5.96e8 against limits of 7.04e-9 (8.5e16 times A) broke
+  // continuity at t = 3.6e33 s; now refused by every plan function that takes limits.
+  const double tiny = 7.041529113171147e-09;
+  const Limits small{tiny, tiny, tiny, tiny};
+  const KinematicState p2{tiny, 7.0415291131975135e-09, -595821443.509712};
+  check_refused(nc::plan_position(p2, tiny, small), ErrorCode::kStartFarOutsideLimits);
+  check_refused(nc::plan_velocity(p2, 0.0, small), ErrorCode::kStartFarOutsideLimits);
+  check_refused(nc::plan_position(p2, tiny, 0.5 * tiny, small), ErrorCode::kStartFarOutsideLimits);
+
+  // |a| above 2e6·max(A+, A-): A± = 1, a = 2.02e6 (its forced velocity a²/2J = 2 mm/s is far
+  // below 2e6·V with J = 1e12).
+  const Limits soft{2000.0, 1.0, 1.0, 1e12};
+  check_refused(nc::plan_position({0.0, 0.0, 2.02e6}, 100.0, soft),
+                ErrorCode::kStartFarOutsideLimits);
+  check_refused(nc::plan_velocity({0.0, 0.0, -2.02e6}, 0.0, soft),
+                ErrorCode::kStartFarOutsideLimits);
+  // |v| above 2e6·V: V = 1e-3, v = 2020 mm/s.
+  const Limits creep{1e-3, 5000.0, 5000.0, 50000.0};
+  check_refused(nc::plan_position({0.0, 2020.0, 0.0}, 100.0, creep),
+                ErrorCode::kStartFarOutsideLimits);
+  check_refused(nc::plan_velocity({0.0, -2020.0, 0.0}, 0.0, creep),
+                ErrorCode::kStartFarOutsideLimits);
+  // The velocity a forces whatever is done, v + a·|a|/2J, above 2e6·V: kLimits (V 2000,
+  // J 50000), a = 2.1e7 (4200 times A) forces 4.41e9 mm/s > 4e9.
+  check_refused(nc::plan_position({0.0, 0.0, 2.1e7}, 100.0, kLimits),
+                ErrorCode::kStartFarOutsideLimits);
+}
+
+TEST_CASE("a start whose braking distance is above 1e15 is refused with 0x4F70",
+          "[profile][range]") {
+  // Fuzz finding P4: v = -1.6e6 mm/s (5.4e4 times V) against A- = 7e-9 needs 1.9e26 mm to stop;
+  // the profile broke continuity by 1.3e29 at t = 2.3e14 s.
+  const Limits p4{30.243137254883315, 7.0415291131711472e-09, 7.0415291132121761e-09,
+                  1064510.2433593273};
+  check_refused(
+      nc::plan_position({7.0415308689085601e-09, -1622465.2431446458, 7.0415291131712373e-09},
+                        7.0415291131643709e-09, p4),
+      ErrorCode::kStartFarOutsideLimits);
+  // At 2000 mm/s: A- = 1.9e-9 brakes over 1.05e15 (refused), 2.1e-9 over 9.5e14 (planned).
+  const KinematicState fast{0.0, 2000.0, 0.0};
+  check_refused(nc::plan_position(fast, 0.0, Limits{2000.0, 5000.0, 1.9e-9, 50000.0}),
+                ErrorCode::kStartFarOutsideLimits);
+  check_refused(nc::plan_velocity(fast, 0.0, Limits{2000.0, 5000.0, 1.9e-9, 50000.0}),
+                ErrorCode::kStartFarOutsideLimits);
+  check_velocity_planned(fast, 0.0, Limits{2000.0, 5000.0, 2.1e-9, 50000.0});
+}
+
+TEST_CASE("a start 1e6 times above V (override 1 ppm at full speed) is planned",
+          "[profile][range]") {
+  // The kernel's farthest start from an override alone: v = 2000 mm/s, the level 1 ppm of it.
+  const Limits slow{0.002, 5000.0, 5000.0, 50000.0};
+  const KinematicState full{0.0, 2000.0, 0.0};
+  profile_checks::StartRelief relief;
+  relief.over_speed = true;
+  check_velocity_planned(full, 0.002, slow, relief);
+  check_position_planned(full, 1000.0, slow, relief);
+}
+
+TEST_CASE("a start at V with an acceleration of rounding size cruises at a = 0",
+          "[profile][range]") {
+  // Fuzz finding P3: v just below V, a = -1.5e-23 (2e-15 of A), target 1.3e11 mm away at V =
+  // 7.04e-9 mm/s. The push to V took the start as at (V, 0) within its rounding tolerance and
+  // gave no piece, so the cruise of 1.84e19 s carried the start's a: its end lay 2.5e15 mm short
+  // of the stop that follows it.
+  const Limits l{7.0415291131711472e-09, 7.0415291131711472e-09, 7.0419991054345708e-09,
+                 2.3093894380261804e-08};
+  const KinematicState start{7.0415291131711472e-09, 7.0415291131710959e-09,
+                             -1.4895713343675384e-23};
+  const double target = 129641627198.24313;
+  const Profile prof = nc::plan_position(start, target, l);
+  REQUIRE(prof.ok());
+  CHECK(prof.duration() == Approx(1.8411004927289029e+19).epsilon(1e-12));
+  // A ramp of |a| / J = 6.45e-16 s takes a to 0; the cruise holds a = 0.
+  REQUIRE(prof.segment_count() == 5);
+  CHECK(prof.segment(0).duration == Approx(6.450065588074504e-16).epsilon(1e-9));
+  CHECK(prof.segment(1).a == 0.0);
+  const profile_checks::Finding f = profile_checks::check_position_profile(prof, start, target, l);
+  INFO(profile_checks::to_string(f));
+  CHECK(f.ok());
+}
+
+TEST_CASE("a landing onto the end velocity keeps J when 2J|v| dwarfs a squared",
+          "[profile][range]") {
+  // Fuzz finding P5: a = A+ = 4.77e-4 just below v1 = V (1.08e-18 short) with J = 9.06e9. The
+  // rounding tolerance of the final curve, taken on a² + 2Jv = 8.6e6, counted the start as on
+  // it, and the exact landing ramp's jerk a² / 2(v1 - v) was 1.05e11, 11.6 times J. Now a ramp
+  // at J (5.26e-14 s) ends at v1.
+  const double x = 0.00047679227941176469;
+  const Limits l{x, x, 0.00047679227941088969, 9059681856.0};
+  const KinematicState start{x, 0.00047679227941176361, x};
+  const Profile prof = nc::plan_velocity(start, x, l);
+  REQUIRE(prof.ok());
+  REQUIRE(prof.segment_count() == 1);
+  CHECK(prof.segment(0).j == -9059681856.0);
+  CHECK(prof.duration() == Approx(x / 9059681856.0).epsilon(1e-12));
+  Limits keep = l;
+  keep.velocity = (start.v + x * x / (2.0 * l.jerk)) * (1.0 + 1e-9);  // the forced overshoot
+  CHECK(profile_checks::check_velocity_profile(prof, start, x, keep).ok());
+}
+
+TEST_CASE("an acceleration left at the end velocity ramps to 0 at J however short the ramp",
+          "[profile][range]") {
+  // Fuzz finding P6: from rest at a = A+ = 7.04e-9 to v1 = 30.24 mm/s with J = 5.96e8. After the
+  // hold at A+ (4.29e9 s) the velocity change took v1 as reached (the acceleration lay below its
+  // rounding tolerance, 1.3e-8) and left out the final ramp: the acceleration jumped from A+ to 0.
+  // Now the ramp of A+ / J = 1.18e-17 s ends the profile.
+  const Limits l{30.243137254883315, 7.0415291131711472e-09, 7.0415291132121761e-09,
+                 595754495.99408698};
+  const KinematicState start{7.0228844789209513e-09, 2.594760871615113e-35, 7.0415291131711472e-09};
+  const double v1 = 30.243137254872856;
+  const Profile prof = nc::plan_velocity(start, v1, l);
+  REQUIRE(prof.ok());
+  REQUIRE(prof.segment_count() == 2);
+  CHECK(prof.segment(1).j == -595754495.99408698);
+  CHECK(prof.segment(1).duration == Approx(1.1819514851367627e-17).epsilon(1e-9));
+  CHECK(profile_checks::check_velocity_profile(prof, start, v1, l).ok());
+}
+
+TEST_CASE("a long hold at A- ends where the bound changes, not past it", "[profile][range]") {
+  // Fuzz finding P7: from v = -8578 mm/s with a 3e-14 above A- = 4.7679e-4 and a smaller
+  // A+ = 4.7584e-4, J = 8.6e9. The hold was timed at A- but ran at the start's a: after 1.8e7 s
+  // it had crossed v = 0 by 2.7e-10 mm/s, still at A- where A+ applies. That start (1.8e7 times
+  // V) is now refused (P8); from v = -900 (1.9e6 times V) the hold of 1.9e6 s drifted 2.8e-11
+  // past v = 0 the same way.
+  const Limits l{0.00047679227941176469, 0.00047583860509535844, 0.00047679227941088969,
+                 8589934592.0};
+  const KinematicState start{0.00047679227941355493, -900.0, 0.00047679227941089749};
+  profile_checks::StartRelief relief;
+  relief.over_speed = true;
+  relief.over_acceleration = true;
+  check_velocity_planned(start, 0.00047679227941176469, l, relief);
+}
+
+TEST_CASE("a start acceleration 1e8 times A is refused: its rounding would pass A+",
+          "[profile][range]") {
+  // Fuzz finding P8: a = -0.695 against A± = 7.3e-9 / 7.0e-9 (1e8 times), J = 2. Ramping a back
+  // by 0.695 leaves a few ulp of 0.695, 1e-8 of A: the next segment began 1e-8 above A+.
+  const Limits l{31.24609375, 7.2750489832789158e-09, 7.0415318020474887e-09, 2.0004863739013672};
+  check_refused(
+      nc::plan_position({8.2572993763189198e-317, 0.12012095731847426, -0.69521963456097768},
+                        0.00047679227918706601, l),
+      ErrorCode::kStartFarOutsideLimits);
+  // 1.9e6 times A+ is planned within the contract.
+  profile_checks::StartRelief relief;
+  relief.over_acceleration = true;
+  check_velocity_planned({0.0, 0.0, -1.9e6 * 7.2750489832789158e-09}, 0.0, l, relief);
 }

@@ -7,6 +7,9 @@
 
 namespace nc::detail {
 
+// The largest |ratio| of a linear coupling (docs/behaviour.md, "Slave axes").
+inline constexpr double kMaxGearRatio = 1e6;
+
 using plc::CommandState;
 using plc::CommandType;
 
@@ -37,6 +40,9 @@ bool ServoAxis::refused_while_coupled(CommandType type) noexcept {
 ErrorCode ServoAxis::gear_in(const plc::Command& command, CouplingPort& port) noexcept {
   if (!std::isfinite(command.ratio)) return ErrorCode::kParameterNotFinite;
   if (command.ratio == 0.0) return ErrorCode::kCouplingFactorZero;
+  // Fuzz finding K6: a ratio of 8.4e301 made the slave's set values overflow (SetAcc inf). With
+  // |ratio| <= 1e6 a cascade of three (4 axes) scales the master's values by at most 1e18.
+  if (std::abs(command.ratio) > kMaxGearRatio) return ErrorCode::kGearRatioOutOfRange;
   if (config_.kind == AxisKind::kEncoder) return ErrorCode::kAxisKindNotAllowed;
   if (command.other_axis < 0 || static_cast<std::size_t>(command.other_axis) >= port.axes.size()) {
     return ErrorCode::kInvalidAxisReference;

@@ -206,4 +206,10 @@ class MasterJob {
   DecouplingChain chain_{};  // empty except after an online decoupling, until the first replan
 };
 
+// The limits a new job or the error ramp runs with from the set state `from` (fuzz findings K4,
+// K5): its own, unless ramping from's acceleration to 0 at its J would pass `max_velocity` while
+// the running job's J is larger; then that J (override.cpp).
+Limits with_running_jerk(const Limits& limits, const KinematicState& from, const MasterJob& running,
+                         double max_velocity) noexcept;
+
 }  // namespace nc::detail

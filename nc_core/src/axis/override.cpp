@@ -30,10 +30,13 @@ bool keeps_table_type(int override_type) noexcept {
   return override_type == 1 || override_type == 2;
 }
 
+}  // namespace
+
 // Fuzz finding K4: a new job starting from a hard-accelerating set state brings a back to 0 at
 // its own J, which passes v + a·|a| / 2J; with a smaller J than the running job's that can pass
 // the axis's max velocity. Then the new job takes the running job's (larger) jerk, as Halt and
-// Stop keep the larger values; the running job kept the max velocity with it.
+// Stop keep the larger values; the running job kept the max velocity with it. The error ramp
+// does the same (K5).
 Limits with_running_jerk(const Limits& limits, const KinematicState& from, const MasterJob& running,
                          double max_velocity) noexcept {
   Limits l = limits;
@@ -42,8 +45,6 @@ Limits with_running_jerk(const Limits& limits, const KinematicState& from, const
   if (peak > max_velocity) l.jerk = running.limits().jerk;
   return l;
 }
-
-}  // namespace
 
 void ServoAxis::read_override() noexcept {
   const uint32_t value = channel_.ref().PlcToNc.Override;

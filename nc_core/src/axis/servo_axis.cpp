@@ -298,14 +298,16 @@ void ServoAxis::raise_error(ErrorCode code) noexcept {
     job_.clear();
     return;
   }
-  // SPEC A6: the axis stops on its own emergency ramp, from the set state it has now.
-  scratch_ = plan_stop(set_, config_.emergency_deceleration, config_.emergency_jerk);
+  // SPEC A6: the axis stops on its own emergency ramp, from the set state it has now; with the
+  // running job's larger jerk where the emergency jerk would pass the max velocity (K5).
+  const Limits limits = with_running_jerk({config_.max_velocity, config_.acceleration,
+                                           config_.emergency_deceleration, config_.emergency_jerk},
+                                          set_, job_, config_.max_velocity);
+  scratch_ = plan_stop(set_, limits.deceleration, limits.jerk);
   if (!scratch_.ok()) {
     job_.clear();
     return;
   }
-  const Limits limits{config_.max_velocity, config_.acceleration, config_.emergency_deceleration,
-                      config_.emergency_jerk};
   job_.start(JobKind::kEmergencyStop, 0, scratch_, scratch_.final_state().p, 0.0, limits);
   target_ = scratch_.final_state().p;
   monitors_.reset_windows();

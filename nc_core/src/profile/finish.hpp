@@ -10,6 +10,17 @@
 
 namespace nc::detail {
 
+// The push before a cruise at V (mirrored frame): velocity_change takes a start within its
+// rounding tolerance of (V, 0) as there and gives no piece, but a cruise must hold a = 0 — a start
+// acceleration of rounding size carried through a long cruise moves the position by a·t²/2 (fuzz
+// finding P3: a = -1.5e-23 for 1.8e19 s, 2.5e15 mm). One ramp at J takes such an a to 0 exactly.
+// Returns the push's new piece count.
+inline int settle_push(Piece* push, int n_push, double a, double jerk) noexcept {
+  if (n_push != 0 || a == 0.0) return n_push;
+  push[0] = Piece{std::abs(a) / jerk, a > 0.0 ? -jerk : jerk, 0.0, NAN};
+  return 1;
+}
+
 // Appends the head pieces (mirrored back by `dir`), a cruise and the tail pieces, and closes
 // exactly on (target, v_end, 0), holding v_end past the end when `holds`. Everything after the
 // head is anchored back from that exact end, so both ends are exact relative to their own values.

@@ -50,6 +50,7 @@ Profile plan_position(const KinematicState& start, double target, const Limits& 
   ErrorCode e = detail::check_state(start);
   if (e == ErrorCode::kNone) e = detail::check_target(target);
   if (e == ErrorCode::kNone) e = detail::check_limits(limits);
+  if (e == ErrorCode::kNone) e = detail::check_start_against(start, limits);
   if (e != ErrorCode::kNone) return Profile::failure(e);
 
   const Bounds bounds{limits.acceleration, limits.deceleration, limits.jerk};
@@ -132,7 +133,8 @@ Profile plan_position(const KinematicState& start, double target, const Limits& 
   if (n_stop < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
   const double s_end = s.p + detail::pieces_distance(limits.velocity, 0.0, stop, n_stop);
   const double cruise = (goal - s_end) / limits.velocity;
-  return finish(start, target, dir, push, n_push, cruise, stop, n_stop);
+  const int n_head = detail::settle_push(push, n_push, s.a, limits.jerk);
+  return finish(start, target, dir, push, n_head, cruise, stop, n_stop);
 }
 
 }  // namespace nc

@@ -93,6 +93,7 @@ Profile plan_position(const KinematicState& start, double target, double target_
   ErrorCode e = detail::check_state(start);
   if (e == ErrorCode::kNone && !std::isfinite(target)) e = ErrorCode::kPositionNotFinite;
   if (e == ErrorCode::kNone) e = detail::check_limits(limits);
+  if (e == ErrorCode::kNone) e = detail::check_start_against(start, limits);
   if (e == ErrorCode::kNone && !std::isfinite(target_velocity)) {
     e = ErrorCode::kParameterNotFinite;
   }
@@ -196,7 +197,8 @@ Profile plan_position(const KinematicState& start, double target, double target_
   if (n_change < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
   const double s_end = s.p + detail::pieces_distance(limits.velocity, 0.0, change, n_change);
   const double cruise = std::max((goal - s_end) / limits.velocity, 0.0);
-  return finish_moving(start, target, v_end, dir, push, n_push, cruise, change, n_change);
+  const int n_head = detail::settle_push(push, n_push, s.a, limits.jerk);
+  return finish_moving(start, target, v_end, dir, push, n_head, cruise, change, n_change);
 }
 
 }  // namespace nc

@@ -1,6 +1,7 @@
 // Input checks shared by the plan functions (internal): every bad input gets its own code.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 #include "nc_core/profile.hpp"
@@ -55,6 +56,33 @@ inline ErrorCode check_limits(const Limits& l) noexcept {
   if (e == ErrorCode::kNone) e = check_positive(l.deceleration, ErrorCode::kDecelerationNotAllowed);
   if (e == ErrorCode::kNone) e = check_positive(l.jerk, ErrorCode::kJerkNotAllowed);
   return e;
+}
+
+// How far outside its limits a start may lie (fuzz finding P2): |a| at most kMaxStartRatio times
+// max(A+, A-), and |v| as well as the velocity the start's acceleration forces whatever is done,
+// |v + a·|a| / 2J|, at most kMaxStartRatio times V. Beyond, bringing the start back takes
+// kMaxStartRatio times the problem's own times and kMaxStartRatio² its distances (a = 1e17·A
+// broke continuity at t = 3.6e33 s), and the state brought back keeps the rounding of the start's
+// size: a few ulp of |a0| is ratio · 2.2e-16 of A, above the planner's 1e-9 from a ratio of about
+// 4e6 (fuzz finding P8: a = 1e8·A ended its ramp 1e-8 above A+). The kernel's farthest start
+// from an override alone (1 ppm at full speed) is 1e6; the outside-the-limits suites use <= 3.
+inline constexpr double kMaxStartRatio = 2e6;
+// The braking distance from the start, speed² / 2A- with that speed, at most kMaxStopDistance
+// (fuzz finding P4: v = 1.6e6 against A- = 7e-9 must travel 1.9e26 to stop, and the profile broke
+// continuity by 1e29). 1000 times the position range; the planner suites stay below 5e11.
+inline constexpr double kMaxStopDistance = 1e15;
+
+// A start too far outside `l` (both already in range), or too fast to stop within
+// kMaxStopDistance: kStartFarOutsideLimits.
+inline ErrorCode check_start_against(const KinematicState& s, const Limits& l) noexcept {
+  const double forced = std::abs(s.v + s.a * std::abs(s.a) / (2.0 * l.jerk));
+  const double speed = std::max(std::abs(s.v), forced);
+  if (!(std::abs(s.a) <= kMaxStartRatio * std::max(l.acceleration, l.deceleration)) ||
+      !(speed <= kMaxStartRatio * l.velocity) ||
+      !(speed * speed <= 2.0 * l.deceleration * kMaxStopDistance)) {
+    return ErrorCode::kStartFarOutsideLimits;
+  }
+  return ErrorCode::kNone;
 }
 
 // A target position: NaN / inf kPositionNotFinite, beyond kMaxMagnitude kTargetPositionNotAllowed.

@@ -43,7 +43,13 @@ int upward(double v, double a, double v1, const Bounds& b, double sign, Sink& ou
   };
   for (int iter = 0; iter < kMaxChangePieces; ++iter) {
     const bool neg = v < 0.0 || (v == 0.0 && a < 0.0);
-    if ((!neg || !cross) && std::abs(a) <= tol_a && v >= v1 - tol_v) return n;
+    if ((!neg || !cross) && std::abs(a) <= tol_a && v >= v1 - tol_v) {
+      // At v1 within rounding. An acceleration left there still ramps to 0 at J (a piece of
+      // rounding-size duration): it may be all of A when J is huge against A (fuzz finding P6:
+      // A = 7e-9, J = 6e8, tol_a = 1.3e-8), and dropping it would jump a by A.
+      if (a != 0.0) put(std::abs(a) / jerk, a > 0.0 ? -jerk : jerk, 0.0, v1, true);
+      return n;
+    }
     const double cap = neg ? b.am : b.ap;
     const double k = neg ? kc : kf;
     // The curve's a reaches 0 at vk (k = 2J vk); differences to it are taken in v, where they
@@ -82,12 +88,16 @@ int upward(double v, double a, double v1, const Bounds& b, double sign, Sink& ou
       continue;
     }
     if (a >= cap * (1.0 - kRel)) {
-      // At the bound: hold it until the -J curve is met (or v reaches 0).
+      // At the bound: hold it until the -J curve is met (or v reaches 0). The profile holds the
+      // acceleration it has, within kRel of the bound: the times are taken at that value, else a
+      // long hold drifts past its end velocity (fuzz finding P7: a 3e-14 above A- for 1.8e7 s
+      // crossed v = 0 by 2.7e-10 still at A-, above the smaller A+ beyond).
+      const double held = a;
       a = cap;
       const double v_curve = vk - cap * cap / (2.0 * jerk);
-      const double t_curve = std::max((v_curve - v) / cap, 0.0);
+      const double t_curve = std::max((v_curve - v) / held, 0.0);
       if (neg) {
-        const double t_zero = -v / cap;
+        const double t_zero = -v / held;
         if (t_zero < t_curve) {
           put(t_zero, 0.0, cap, 0.0, true);
           continue;
@@ -103,14 +113,16 @@ int upward(double v, double a, double v1, const Bounds& b, double sign, Sink& ou
     // Within rounding of the final curve (v_nat = v1) the rise ends at a = 0 exactly: the
     // remaining time must not jump with the square root of the rounding.
     const bool on_final = final_curve && meet2 <= k_tol;
-    if (on_final && a < 0.0 && v > v1) {
-      // Coming down onto v1 with a slightly forced overshoot: one ramp that lands exactly, its
-      // jerk a^2 / 2(v - v1) above J by at most ~4 kRel. Along that ramp the overshoot stays the
-      // same fraction of v - v1 and of k_tol, so every state sampled on it decides the same way
-      // (re-planning gives the rest of it); a ramp at J would keep the absolute overshoot while
-      // k_tol shrinks, and the decision would flip part-way.
-      const double t = 2.0 * (v1 - v) / a;
-      put(t, -a / t, 0.0, v1, true);
+    // Coming down onto v1 with a slightly forced overshoot: one ramp that lands exactly, its
+    // jerk a^2 / 2(v - v1) above J by at most ~4 kRel. Along that ramp the overshoot stays the
+    // same fraction of v - v1 and of k_tol, so every state sampled on it decides the same way
+    // (re-planning gives the rest of it); a ramp at J would keep the absolute overshoot while
+    // k_tol shrinks, and the decision would flip part-way. Only where that jerk is within the
+    // ~4 kRel: when 2J|v| dominates k_tol, "within rounding" of the final curve allows an a^2
+    // far above 2J(v - v1) (fuzz finding P5: 11.6 J), and the ramp at J below is taken instead.
+    const double landing_t = 2.0 * (v1 - v) / a;
+    if (on_final && a < 0.0 && v > v1 && -a / landing_t <= jerk * (1.0 + 8.0 * kRel)) {
+      put(landing_t, -a / landing_t, 0.0, v1, true);
       return n;
     }
     const double a_meet = on_final ? 0.0 : std::sqrt(std::max(meet2, 0.0));

@@ -82,6 +82,8 @@ enum class ErrorCode : uint32_t {
   kActualValueNotFinite = 0x4F0B,      // an actual value read by a block is NaN or infinite
   kTwoSpeedDistanceTooShort = 0x4F0C,  // two-speed start not farther than the braking distance
   kCouplingLoop = 0x4F0D,              // coupling would close a loop (also master = slave)
+  kGearRatioOutOfRange = 0x4F71,       // MC_GearIn ratio above 1e6 in size
+  kStartFarOutsideLimits = 0x4F70,  // planner start 2e6 times outside the limits or 1e15 from rest
 
   // --- CNC HLI coupling IDs (decimal) ---
   kHliFractOnReferencedAxis = 70195,

@@ -1,0 +1,32 @@
+// The error ramp from a hard-accelerating motion keeps the axis's max velocity (fuzz finding K5,
+// found by the soak): where the emergency jerk would ramp the acceleration down too slowly
+// (v + a·|a| / 2J above the max velocity), the ramp takes the running job's larger jerk, as a new
+// job does (K4; docs/behaviour.md, "Errors and reset").
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include "kernel_harness.hpp"
+
+TEST_CASE("the error ramp from a hard acceleration keeps Vmax", "[kernel][errors]") {
+  // Seed axis: max velocity 2200 mm/s, emergency deceleration 10000 mm/s², emergency jerk 1e5
+  // mm/s³. A positioning at 2200 mm/s with A 20000 and J 1e6 until v >= 1700 mm/s (a = 20000
+  // there), then the plus feed enable is removed (0x4358). At the emergency jerk the acceleration
+  // would add 20000² / (2·1e5) = 2000 mm/s (3700 mm/s); at J 1e6 it adds 200 mm/s.
+  kt::Harness h;
+  h.post(kt::move_absolute(100000.0, 2200.0, 20000.0, 20000.0, 1e6));
+  REQUIRE(h.cycles_until([&] { return h.x->NcToPlc.SetVelo >= 1700.0; }, 1000) > 0);
+  REQUIRE(h.x->NcToPlc.SetAcc == Approx(20000.0));
+  const double v0 = h.x->NcToPlc.SetVelo;
+  kt::set_enables(*h.x, true, false, true);
+  double peak = 0.0;
+  for (int i = 0; i < 5000; ++i) {
+    h.cycles(1);
+    peak = std::max(peak, std::abs(h.x->NcToPlc.SetVelo));
+  }
+  CHECK(h.x->NcToPlc.ErrorCode == 0x4358U);
+  CHECK(peak <= 2200.0);
+  CHECK(peak == Approx(v0 + 200.0).margin(25.0));  // a ramped out at J 1e6 (one cycle's a more)
+  CHECK(h.x->NcToPlc.SetVelo == 0.0);
+}
