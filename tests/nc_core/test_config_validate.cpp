@@ -40,7 +40,6 @@ const std::vector<DoubleField> kPositiveFields = {
 };
 
 const std::vector<DoubleField> kNonNegativeFields = {
-    {"drive_time_constant", &nc::AxisConfig::drive_time_constant},
     {"drive_max_velocity", &nc::AxisConfig::drive_max_velocity},
     {"encoder_increment", &nc::AxisConfig::encoder_increment},
     {"following_error_filter_time", &nc::AxisConfig::following_error_filter_time},
@@ -62,6 +61,7 @@ const std::vector<DoubleField> kAllDoubleFields = [] {
   std::vector<DoubleField> all = kPositiveFields;
   all.insert(all.end(), kNonNegativeFields.begin(), kNonNegativeFields.end());
   all.push_back({"position_kv", &nc::AxisConfig::position_kv});
+  all.push_back({"drive_time_constant", &nc::AxisConfig::drive_time_constant});
   all.push_back({"velocity_feed_forward", &nc::AxisConfig::velocity_feed_forward});
   all.push_back({"drive_dead_time", &nc::AxisConfig::drive_dead_time});
   all.push_back({"sw_limit_min", &nc::AxisConfig::sw_limit_min});
@@ -194,6 +194,23 @@ TEST_CASE("position_kv is 0 to 100 1/s (issue 16: 1.3e88 was accepted and overfl
     const auto e = error_of([&] { nc::validate(c); });
     REQUIRE(e);
     CHECK(e->pointer() == "/position_kv");
+    CHECK(e->rule() == "must be in [0, 100]");
+  }
+}
+
+TEST_CASE("drive_time_constant is 0 to 100 s (fuzz finding C2: 1e308 was accepted and overflowed)",
+          "[config]") {
+  for (const double ok : {0.0, 0.01, 100.0}) {
+    nc::AxisConfig c = named_axis();
+    c.drive_time_constant = ok;
+    CHECK_NOTHROW(nc::validate(c));
+  }
+  for (const double bad : {-0.01, 100.5, 1e308}) {
+    nc::AxisConfig c = named_axis();
+    c.drive_time_constant = bad;
+    const auto e = error_of([&] { nc::validate(c); });
+    REQUIRE(e);
+    CHECK(e->pointer() == "/drive_time_constant");
     CHECK(e->rule() == "must be in [0, 100]");
   }
 }

@@ -139,8 +139,10 @@ void visit_fields(Config& c, Visitor&& v) {
 
   v(FieldInfo{"drive_model", "", "ideal or first_order_lag (with time constant and dead time)"},
     c.drive_model, EnumRule<DriveModel>{kDriveModelNames});
+  // At most 100 s: a lag of 100 s already hides the drive for minutes; 1e308 overflowed the
+  // drive model's step (fuzz finding C2).
   v(FieldInfo{"drive_time_constant", "s", "first-order lag of the drive; 0 = none"},
-    c.drive_time_constant, kNonNegative);
+    c.drive_time_constant, closed_range(0.0, 100.0));
   v(FieldInfo{"drive_dead_time", "s", "drive dead time, rounded to whole NC cycles"},
     c.drive_dead_time, closed_range(0.0, 1.0));
   v(FieldInfo{"drive_max_velocity", "mm/s", "drive saturation velocity; 0 = no limit"},
