@@ -51,6 +51,11 @@ struct AxisConfig {
   double sw_limit_min = -100000.0;  // mm; < sw_limit_max when both are enabled
   double sw_limit_max = 100000.0;   // mm
 
+  // Homing (SPEC F, MC_Home; docs/behaviour.md "Homing"). true: the axis is referenced from the
+  // start (an absolute encoder); false: it must home first, and until it has, its software
+  // limits are not monitored.
+  bool homed_at_start = true;
+
   double modulo_factor = 360.0;  // mm or °, > 0
   int override_type = 3;         // 1 … 4, seed 000 §2.2
 

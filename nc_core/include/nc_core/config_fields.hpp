@@ -126,6 +126,10 @@ void visit_fields(Config& c, Visitor&& v) {
     c.sw_limit_min, kAnyFinite);
   v(FieldInfo{"sw_limit_max", "mm", "maximum software limit"}, c.sw_limit_max, kAnyFinite);
 
+  v(FieldInfo{"homed_at_start", "",
+              "referenced from the start (absolute encoder); false: must home (MC_Home)"},
+    c.homed_at_start, FlagRule{});
+
   v(FieldInfo{"modulo_factor", "mm", "period of modulo positioning (360 for a rotary axis)"},
     c.modulo_factor, kPositive);
   v(FieldInfo{"override_type", "", "override type of seed 000 §2.2"}, c.override_type,

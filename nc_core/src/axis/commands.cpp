@@ -190,12 +190,8 @@ ErrorCode ServoAxis::start_velocity(const plc::Command& command) noexcept {
   if (direction == 0.0) return ErrorCode::kDirectionInvalid;
   // Continuous motion has no target: refuse it only when it would run further out from (or
   // straight through) an enabled software limit it already stands on or beyond.
-  if (direction > 0.0 && config_.sw_limit_max_enabled && set_.p >= config_.sw_limit_max) {
-    return ErrorCode::kSoftLimitMaxAtStart;
-  }
-  if (direction < 0.0 && config_.sw_limit_min_enabled && set_.p <= config_.sw_limit_min) {
-    return ErrorCode::kSoftLimitMinAtStart;
-  }
+  if (direction > 0.0 && monitors_.at_or_above_max(set_.p)) return ErrorCode::kSoftLimitMaxAtStart;
+  if (direction < 0.0 && monitors_.at_or_below_min(set_.p)) return ErrorCode::kSoftLimitMinAtStart;
   if (!channel_.controller_enabled() || !channel_.feed_enabled(direction)) {
     return ErrorCode::kNoControllerOrFeedEnable;
   }

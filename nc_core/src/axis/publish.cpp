@@ -63,7 +63,7 @@ void ServoAxis::phase_publish(uint64_t cycle_counter) noexcept {
     word |= static_cast<uint32_t>(value) << bit;
   };
   set_bit(plc::kStateOperational, enabled && !error);
-  set_bit(plc::kStateHomed, true);  // no homing yet: every axis counts as homed
+  set_bit(plc::kStateHomed, homed_);
   set_bit(plc::kStateNotMoving, std::abs(drive_.velocity()) < config_.standstill_window);
   set_bit(plc::kStateInPositionArea, monitors_.in_position_area());
   set_bit(plc::kStateInTargetPosition, monitors_.in_target_position());

@@ -16,6 +16,7 @@ ServoAxis::ServoAxis(const AxisConfig& config, double cycle_time, std::size_t in
   controller_.feed_forward = config_.velocity_feed_forward;
   drive_.configure(config_, cycle_time_, 0.0);
   monitors_.configure(config_, cycle_time_);
+  set_homed(config_.homed_at_start);
   set_ = KinematicState{drive_.measured_position(), 0.0, 0.0};
   previous_set_position_ = set_.p;
   target_ = set_.p;

@@ -193,6 +193,12 @@ class ServoAxis {
   double previous_measured_ = 0.0;
   double target_ = 0.0;  // end position of the last positioning / stop; window monitors use it
 
+  // Referenced (StateDWord bit 1): the software limits are monitored only then.
+  bool homed_ = true;
+  void set_homed(bool homed) noexcept {
+    homed_ = homed;
+    monitors_.set_referenced(homed);
+  }
   bool locked_ = false;  // MC_Stop: motion commands refused until kStopRelease
   bool has_been_stopped_ = false;
   bool error_event_ = false;  // an error was raised in this cycle
