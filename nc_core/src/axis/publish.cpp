@@ -68,9 +68,10 @@ void ServoAxis::phase_publish(uint64_t cycle_counter) noexcept {
   set_bit(plc::kStateInPositionArea, monitors_.in_position_area());
   set_bit(plc::kStateInTargetPosition, monitors_.in_target_position());
   set_bit(plc::kStateHasBeenStopped, has_been_stopped_);
-  set_bit(plc::kStateHasJob, job_.active());
+  set_bit(plc::kStateHasJob, job_.active() || homing_.active());
   set_bit(plc::kStatePositiveDirection, set_.v > 0.0);
   set_bit(plc::kStateNegativeDirection, set_.v < 0.0);
+  set_bit(plc::kStateHomingBusy, homing_.active());
   set_bit(plc::kStateConstantVelocity, constant_velocity);
   set_bit(plc::kStateCompensating, stack_.compensation().running());
   set_bit(plc::kStateExtSetPointGenEnabled, stack_.external().enabled());
@@ -91,6 +92,8 @@ void ServoAxis::phase_publish(uint64_t cycle_counter) noexcept {
     state = AxisState::kDisabled;
   } else if (slave) {
     state = AxisState::kSynchronizedMotion;  // also while the master stands still (issue 9)
+  } else if (homing_.active()) {
+    state = AxisState::kHoming;
   } else if (locked_ || kind == JobKind::kStop || kind == JobKind::kEmergencyStop) {
     state = AxisState::kStopping;
   } else if (kind == JobKind::kPosition || kind == JobKind::kHalt) {
