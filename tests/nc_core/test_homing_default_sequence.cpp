@@ -43,6 +43,21 @@ int jump(const Run& run, double size) {
   return -1;
 }
 
+// The published cycles before and after the position setting of a default homing to
+// `position`, run until Done.
+struct Reference {
+  kt::Sample before, after;
+};
+
+Reference reference_of(kt::Harness& h, double position) {
+  const uint16_t n = h.post(kt::home(plc::MC_DefaultHoming, position));
+  const Run run = home_until_outcome(h, n);
+  REQUIRE(h.state_of(n) == CommandState::kDone);
+  const int j = jump(run, 20.0);
+  REQUIRE(j > 0);
+  return {run.samples[static_cast<std::size_t>(j - 1)], run.samples[static_cast<std::size_t>(j)]};
+}
+
 bool bit(const kt::Sample& s, plc::StateBit b) {
   return plc::test_bit(s.state_word, b);
 }
@@ -107,14 +122,8 @@ TEST_CASE(
 
 TEST_CASE("default homing with Position 40 puts 40 at the sync pulse", "[homing][default]") {
   kt::Harness h(kt::homing_axis());
-  const uint16_t n = h.post(kt::home(plc::MC_DefaultHoming, 40.0));
-  const Run run = home_until_outcome(h, n);
-  REQUIRE(h.state_of(n) == CommandState::kDone);
-  const int j = jump(run, 50.0);
-  REQUIRE(j > 0);
-  const kt::Sample& before = run.samples[static_cast<std::size_t>(j - 1)];
-  const kt::Sample& after = run.samples[static_cast<std::size_t>(j)];
-  CHECK(after.act_pos == Approx(before.act_pos - 95.0 + 40.0 - 0.01).margin(2e-4));
+  const Reference ref = reference_of(h, 40.0);
+  CHECK(ref.after.act_pos == Approx(ref.before.act_pos - 95.0 + 40.0 - 0.01).margin(2e-4));
   CHECK(h.x->NcToPlc.ActPos > 40.0 - 0.16);
   CHECK(h.x->NcToPlc.ActPos < 40.0);
 }
@@ -124,16 +133,10 @@ TEST_CASE("sync search in the + direction: through the cam, the pulse at 115 bec
   nc::AxisConfig c = kt::homing_axis();
   c.homing_sync_search_positive = true;
   kt::Harness h(c);
-  const uint16_t n = h.post(kt::home(plc::MC_DefaultHoming, 0.0));
-  const Run run = home_until_outcome(h, n);
-  REQUIRE(h.state_of(n) == CommandState::kDone);
-  const int j = jump(run, 50.0);
-  REQUIRE(j > 0);
-  const kt::Sample& before = run.samples[static_cast<std::size_t>(j - 1)];
-  CHECK(before.act_pos >= 115.0);
-  CHECK(before.act_pos < 115.0 + 0.0101);
-  CHECK(run.samples[static_cast<std::size_t>(j)].act_pos ==
-        Approx(before.act_pos - 115.0 + 0.01).margin(2e-4));
+  const Reference ref = reference_of(h, 0.0);
+  CHECK(ref.before.act_pos >= 115.0);
+  CHECK(ref.before.act_pos < 115.0 + 0.0101);
+  CHECK(ref.after.act_pos == Approx(ref.before.act_pos - 115.0 + 0.01).margin(2e-4));
   CHECK(h.x->NcToPlc.ActPos > 0.0);
   CHECK(h.x->NcToPlc.ActPos < 0.16);
 }
@@ -142,17 +145,12 @@ TEST_CASE("without a sync pulse the cam edge is the reference", "[homing][defaul
   nc::AxisConfig c = kt::homing_axis();
   c.homing_sync_pulse_distance = 0.0;
   kt::Harness h(c);
-  const uint16_t n = h.post(kt::home(plc::MC_DefaultHoming, 0.0));
-  const Run run = home_until_outcome(h, n);
-  REQUIRE(h.state_of(n) == CommandState::kDone);
-  const int j = jump(run, 50.0);
-  REQUIRE(j > 0);
-  const kt::Sample& before = run.samples[static_cast<std::size_t>(j - 1)];
+  const Reference ref = reference_of(h, 0.0);
   // The cam signal fell at 100; the PLC passed it on one cycle later, so the NC set 0 where
   // the actual stood then, at most two cycles (0.02 mm) below the edge.
-  CHECK(before.act_pos < 100.0);
-  CHECK(before.act_pos > 100.0 - 0.0201);
-  CHECK(run.samples[static_cast<std::size_t>(j)].act_pos == Approx(-0.01).margin(2e-4));
+  CHECK(ref.before.act_pos < 100.0);
+  CHECK(ref.before.act_pos > 100.0 - 0.0201);
+  CHECK(ref.after.act_pos == Approx(-0.01).margin(2e-4));
   CHECK(kt::bit(*h.x, plc::kStateHomed));
 }
 
