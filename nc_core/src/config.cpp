@@ -6,7 +6,6 @@
 #include <cmath>
 #include <system_error>
 #include <type_traits>
-#include <utility>
 
 #include "config_text.hpp"
 
@@ -197,15 +196,6 @@ void validate(const AxisConfig& config) {
                           config_text::number(config.sw_limit_max) +
                           ") when both software limits are enabled",
                       config_text::number(config.sw_limit_min));
-  }
-  // A homing velocity is a start velocity (0x4221's rule).
-  for (const auto& [key, value] :
-       {std::pair{"/homing_velocity_to_cam", config.homing_velocity_to_cam},
-        std::pair{"/homing_velocity_off_cam", config.homing_velocity_off_cam}}) {
-    if (value > config.max_velocity || value > config.ref_velocity) {
-      throw ConfigError(key, "must be <= max_velocity and ref_velocity",
-                        config_text::number(value));
-    }
   }
   // Seed 002 §4: P-AXIS-00460 changes how the P-AXIS-00436 forward mapping computes.
   if (config.recalc_input_position_absolute && !config.recalc_link_main_input_position) {

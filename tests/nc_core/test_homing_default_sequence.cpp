@@ -112,11 +112,13 @@ TEST_CASE(
   // cycle the pulse was seen in.
   CHECK(out.ActPos > -0.16);
   CHECK(out.ErrorCode == 0);
+  CHECK(out.TargetPos == out.SetPos);  // the windows watch where it stopped
   CHECK(kt::bit(*h.x, plc::kStateHomed));
   CHECK_FALSE(kt::bit(*h.x, plc::kStateHomingBusy));
   CHECK(kt::axis_state(*h.x) == AxisState::kStandstill);
   h.cycles(50);
   CHECK(kt::axis_state(*h.x) == AxisState::kStandstill);
+  CHECK(kt::bit(*h.x, plc::kStateInTargetPosition));
   CHECK(out.ActPos == Approx(run.samples.back().act_pos).margin(1e-9));
 }
 

@@ -103,6 +103,20 @@ TEST_CASE("a coupled slave refuses MC_Home with 0x424E", "[homing][refusals]") {
   }
 }
 
+TEST_CASE("default homing with a homing velocity above Vmax or Vref is refused with 0x4221",
+          "[homing][refusals]") {
+  nc::AxisConfig c = kt::homing_axis();
+  c.max_velocity = 50.0;  // below the 100 mm/s towards the cam
+  kt::TwinKernels t(c);
+  kt::expect_refused_without_effect(
+      t, {"to cam > Vmax", kt::home(plc::MC_DefaultHoming, 0.0), ErrorCode::kVelocityNotAllowed});
+  nc::AxisConfig r = kt::homing_axis();
+  r.ref_velocity = 5.0;  // below the 10 mm/s off the cam
+  kt::TwinKernels u(r);
+  kt::expect_refused_without_effect(
+      u, {"off cam > Vref", kt::home(plc::MC_DefaultHoming, 0.0), ErrorCode::kVelocityNotAllowed});
+}
+
 TEST_CASE("MC_Direct is refused while the axis moves; the move goes on", "[homing][refusals]") {
   kt::TwinKernels t(kt::homing_axis());
   t.both(kt::move_absolute(300.0, 1000.0));

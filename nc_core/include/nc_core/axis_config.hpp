@@ -59,8 +59,8 @@ struct AxisConfig {
   // then the sync pulse (the encoder's zero pulse) or, with no sync pulse, the cam edge.
   bool homing_cam_search_positive = true;    // direction towards the reference cam
   bool homing_sync_search_positive = false;  // direction off the cam and to the sync pulse
-  double homing_velocity_to_cam = 100.0;     // mm/s, > 0, <= max_velocity and ref_velocity
-  double homing_velocity_off_cam = 10.0;     // mm/s, > 0, <= max_velocity and ref_velocity
+  double homing_velocity_to_cam = 100.0;     // mm/s, > 0; above max/ref velocity: MC_Home refused
+  double homing_velocity_off_cam = 10.0;     // mm/s, > 0; likewise
   double homing_sync_pulse_distance = 5.0;   // mm, >= 0: a zero pulse every this many mm of the
                                              // raw encoder (0 = none: the cam edge is used)
   double homing_search_distance = 10000.0;   // mm, > 0: most travel to the cam, and after it

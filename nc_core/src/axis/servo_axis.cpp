@@ -220,6 +220,7 @@ void ServoAxis::finish_job() noexcept {
   if (homing_.finished()) {
     channel_.answer_current(CommandState::kDone);
     homing_.clear();
+    target_ = set_.p;  // where the homing stopped: the windows watch it from now on
   }
   switch (job_.kind()) {
     case JobKind::kNone:

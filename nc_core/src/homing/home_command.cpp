@@ -1,6 +1,7 @@
 // MC_Home on a servo axis (SPEC F, issue 13): the homing modes, their refusals, the position
 // setting, and phase b while the default homing runs (homing_job.hpp). The rules are written in
 // docs/behaviour.md "Homing".
+#include <algorithm>
 #include <cmath>
 
 #include "axis/servo_axis.hpp"
@@ -56,6 +57,11 @@ ErrorCode ServoAxis::start_home(const plc::Command& command) noexcept {
 
   // MC_DefaultHoming: a motion start (aborting the running motion) in both search directions.
   if (stack_.external().enabled()) return ErrorCode::kStartTypeNotAllowed;
+  // Its velocities are start velocities (seed 000 §2.1 table 2: not above Vmax or Vref).
+  const double fastest = std::max(config_.homing_velocity_to_cam, config_.homing_velocity_off_cam);
+  if (fastest > config_.max_velocity || fastest > config_.ref_velocity) {
+    return ErrorCode::kVelocityNotAllowed;
+  }
   if (stack_.compensation().running()) return ErrorCode::kCompensationActive;
   if (!channel_.feed_enabled(config_.homing_cam_search_positive ? 1.0 : -1.0) ||
       !channel_.feed_enabled(config_.homing_sync_search_positive ? 1.0 : -1.0)) {
