@@ -10,6 +10,8 @@ void MC_ReadStatus::operator()(const plc::AXIS_REF& axis) noexcept {
   Busy = true;
 
   const plc::NCTOPLC_AXIS_REF& nc = axis.NcToPlc;
+  Status.Homed = plc::test_bit(nc.StateDWord, plc::kStateHomed);
+  Status.HomingBusy = plc::test_bit(nc.StateDWord, plc::kStateHomingBusy);
   switch (static_cast<plc::AxisState>(nc.AxisState)) {
     case plc::AxisState::kDisabled:
       Disabled = true;

@@ -59,6 +59,10 @@ plc::AXIS_REF& Kernel::add_axis(const AxisConfig& config) {
   return axes_.back()->ref();
 }
 
+bool Kernel::reference_cam(std::string_view name) const {
+  return find(name).reference_cam();
+}
+
 detail::ServoAxis& Kernel::find(std::string_view name) const {
   for (const auto& a : axes_) {
     if (a->config().name == name) return *a;

@@ -142,6 +142,14 @@ std::string_view error_text(ErrorCode code) noexcept {
     case E::kStartFarOutsideLimits:
       return "start state too far outside the limits of the move (2e6 times, or a stop longer than "
              "1e15)";
+    case E::kHomingCamNotFound:
+      return "homing: reference cam not found within the search distance";
+    case E::kHomingModeNotSupported:
+      return "homing mode not supported (MC_AbsSwitch, MC_LimitSwitch, MC_RefPulse)";
+    case E::kHomingSyncPulseNotFound:
+      return "homing: cam edge or sync pulse not found within the search distance";
+    case E::kHomingAxisMoving:
+      return "homing: setting the position needs the axis at rest without a job";
     case E::kHliFractOnReferencedAxis:
       return "FRACT coupling: the axis cannot stop before a software limit";
     case E::kHliChangeWhileMoving:

@@ -206,7 +206,7 @@ TEST_CASE("Reset and StopRelease are answered kDone at once and leave CmdNo alon
 TEST_CASE("commands the kernel does not provide yet are refused with kUnknownCommand",
           "[kernel][answers]") {
   kt::Harness h;
-  for (CommandType t : {CommandType::kGearInDyn, CommandType::kHome, CommandType::kNone}) {
+  for (CommandType t : {CommandType::kGearInDyn, CommandType::kNone}) {
     const uint16_t n = h.post(kt::simple(t));
     h.cycles(1);
     CHECK(h.answer(n).state == CommandState::kError);

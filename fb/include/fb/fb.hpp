@@ -13,6 +13,7 @@
 #include "fb/mc_gear_in.hpp"
 #include "fb/mc_gear_out.hpp"
 #include "fb/mc_halt.hpp"
+#include "fb/mc_home.hpp"
 #include "fb/mc_move_absolute.hpp"
 #include "fb/mc_move_modulo.hpp"
 #include "fb/mc_move_relative.hpp"

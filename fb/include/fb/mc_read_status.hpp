@@ -8,7 +8,8 @@
 // state: Error with 0x4040, Valid FALSE.
 // ConstantVelocity = StateDWord bit 12. Accelerating / Decelerating: the set acceleration
 // makes |SetVelo| grow / shrink (from rest, any set acceleration is accelerating); neither
-// while ConstantVelocity is set.
+// while ConstantVelocity is set. Status: the StateDWord bits Tc2_MC2's ST_AxisStatus carries
+// that ncsdk publishes so far (Homed = bit 1, HomingBusy = bit 11), read whenever Enable is TRUE.
 #pragma once
 
 #include <cstdint>
@@ -16,6 +17,12 @@
 #include "plc_interface/axis_ref.hpp"
 
 namespace fb {
+
+// The part of Tc2_MC2's ST_AxisStatus that ncsdk fills (grows as the NC publishes more).
+struct ST_AxisStatus {
+  bool Homed = false;       // the axis is referenced (StateDWord bit 1)
+  bool HomingBusy = false;  // a homing sequence runs (StateDWord bit 11)
+};
 
 class MC_ReadStatus {
  public:
@@ -38,6 +45,7 @@ class MC_ReadStatus {
   bool ConstantVelocity = false;
   bool Accelerating = false;
   bool Decelerating = false;
+  ST_AxisStatus Status{};
 
   // Cycle function: runs the block once.
   void operator()(const plc::AXIS_REF& axis) noexcept;

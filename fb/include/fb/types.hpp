@@ -28,4 +28,14 @@ using plc::MC_BlendingPrevious;
 using plc::MC_Buffered;
 using plc::MC_BufferMode;
 
+using plc::DEFAULT_HOME_POSITION;
+using plc::MC_AbsSwitch;
+using plc::MC_DefaultHoming;
+using plc::MC_Direct;
+using plc::MC_ForceCalibration;
+using plc::MC_HomingMode;
+using plc::MC_LimitSwitch;
+using plc::MC_RefPulse;
+using plc::MC_ResetCalibration;
+
 }  // namespace fb

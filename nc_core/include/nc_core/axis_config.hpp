@@ -51,6 +51,25 @@ struct AxisConfig {
   double sw_limit_min = -100000.0;  // mm; < sw_limit_max when both are enabled
   double sw_limit_max = 100000.0;   // mm
 
+  // Homing (SPEC F, MC_Home; docs/behaviour.md "Homing"). true: the axis is referenced from the
+  // start (an absolute encoder); false: it must home first, and until it has, its software
+  // limits are not monitored.
+  bool homed_at_start = true;
+  // MC_DefaultHoming, the NC's sequence (docs/behaviour.md "Homing"): towards the cam, off it,
+  // then the sync pulse (the encoder's zero pulse) or, with no sync pulse, the cam edge.
+  bool homing_cam_search_positive = true;    // direction towards the reference cam
+  bool homing_sync_search_positive = false;  // direction off the cam and to the sync pulse
+  double homing_velocity_to_cam = 100.0;     // mm/s, > 0; above max/ref velocity: MC_Home refused
+  double homing_velocity_off_cam = 10.0;     // mm/s, > 0; likewise
+  double homing_sync_pulse_distance = 5.0;   // mm, >= 0: a zero pulse every this many mm of the
+                                             // raw encoder (0 = none: the cam edge is used)
+  double homing_search_distance = 10000.0;   // mm, > 0: most travel to the cam, and after it
+  double homing_reference_position = 0.0;    // mm: MC_Home.Position = DEFAULT_HOME_POSITION
+  // The simulated reference cam (a digital input, Kernel::reference_cam): on while the raw
+  // encoder position lies in [position, position + width]; width 0 = no cam.
+  double homing_cam_position = 100.0;  // mm
+  double homing_cam_width = 10.0;      // mm, >= 0
+
   double modulo_factor = 360.0;  // mm or °, > 0
   int override_type = 3;         // 1 … 4, seed 000 §2.2
 

@@ -126,6 +126,32 @@ void visit_fields(Config& c, Visitor&& v) {
     c.sw_limit_min, kAnyFinite);
   v(FieldInfo{"sw_limit_max", "mm", "maximum software limit"}, c.sw_limit_max, kAnyFinite);
 
+  v(FieldInfo{"homed_at_start", "",
+              "referenced from the start (absolute encoder); false: must home (MC_Home)"},
+    c.homed_at_start, FlagRule{});
+  v(FieldInfo{"homing_cam_search_positive", "", "homing: search the cam in the + direction"},
+    c.homing_cam_search_positive, FlagRule{});
+  v(FieldInfo{"homing_sync_search_positive", "",
+              "homing: leave the cam and search the sync pulse in the + direction"},
+    c.homing_sync_search_positive, FlagRule{});
+  v(FieldInfo{"homing_velocity_to_cam", "mm/s", "homing: velocity towards the cam"},
+    c.homing_velocity_to_cam, kPositive);
+  v(FieldInfo{"homing_velocity_off_cam", "mm/s", "homing: velocity off the cam"},
+    c.homing_velocity_off_cam, kPositive);
+  v(FieldInfo{"homing_sync_pulse_distance", "mm",
+              "homing: encoder zero pulse every this many mm; 0 = none (cam edge)"},
+    c.homing_sync_pulse_distance, kNonNegative);
+  v(FieldInfo{"homing_search_distance", "mm",
+              "homing: most travel to the cam, and from the cam to the reference"},
+    c.homing_search_distance, kPositive);
+  v(FieldInfo{"homing_reference_position", "mm",
+              "homing: position of the reference when MC_Home.Position is the default"},
+    c.homing_reference_position, kAnyFinite);
+  v(FieldInfo{"homing_cam_position", "mm", "simulated reference cam: where it begins (raw)"},
+    c.homing_cam_position, kAnyFinite);
+  v(FieldInfo{"homing_cam_width", "mm", "simulated reference cam: its length; 0 = no cam"},
+    c.homing_cam_width, kNonNegative);
+
   v(FieldInfo{"modulo_factor", "mm", "period of modulo positioning (360 for a rotary axis)"},
     c.modulo_factor, kPositive);
   v(FieldInfo{"override_type", "", "override type of seed 000 §2.2"}, c.override_type,

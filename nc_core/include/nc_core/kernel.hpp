@@ -63,6 +63,9 @@ class Kernel {
   // The configuration as the axis uses it (id filled in).
   const AxisConfig& config(std::string_view name) const;
   const KernelConfig& kernel_config() const noexcept { return config_; }
+  // The simulated reference cam of an axis (AxisConfig::homing_cam_position / _width), a digital
+  // input for the PLC to pass to MC_Home.bCalibrationCam. Set-up lookup by name (ConfigError).
+  bool reference_cam(std::string_view name) const;
 
   // Cycle function: one NC cycle, phase by phase over all axes (docs/architecture.md "One
   // tick"): commands, set values (masters before slaves), couplings on drive positions, position

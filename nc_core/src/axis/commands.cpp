@@ -87,6 +87,9 @@ void ServoAxis::handle(const plc::Command& command, CouplingPort& port) noexcept
     case CommandType::kGearOut:
       code = gear_out(command, port);
       break;
+    case CommandType::kHome:
+      code = start_home(command);
+      break;
     case CommandType::kReset:
       // Answered at once and without taking CmdNo: a reset is not a job. It also cancels an
       // MC_Stop lock (Tc2_MC2: "the locking of the axis is canceled with an MC_Reset").
@@ -100,7 +103,7 @@ void ServoAxis::handle(const plc::Command& command, CouplingPort& port) noexcept
       channel_.answer(command.number, CommandState::kDone);
       return;
     default:
-      // MC_GearInDyn and homing come with later issues; until then the kernel refuses them.
+      // MC_GearInDyn comes with a later issue; until then the kernel refuses it.
       code = ErrorCode::kUnknownCommand;
       break;
   }
@@ -193,12 +196,8 @@ ErrorCode ServoAxis::start_velocity(const plc::Command& command) noexcept {
   if (direction == 0.0) return ErrorCode::kDirectionInvalid;
   // Continuous motion has no target: refuse it only when it would run further out from (or
   // straight through) an enabled software limit it already stands on or beyond.
-  if (direction > 0.0 && config_.sw_limit_max_enabled && set_.p >= config_.sw_limit_max) {
-    return ErrorCode::kSoftLimitMaxAtStart;
-  }
-  if (direction < 0.0 && config_.sw_limit_min_enabled && set_.p <= config_.sw_limit_min) {
-    return ErrorCode::kSoftLimitMinAtStart;
-  }
+  if (direction > 0.0 && monitors_.at_or_above_max(set_.p)) return ErrorCode::kSoftLimitMaxAtStart;
+  if (direction < 0.0 && monitors_.at_or_below_min(set_.p)) return ErrorCode::kSoftLimitMinAtStart;
   if (!channel_.controller_enabled() || !channel_.feed_enabled(direction)) {
     return ErrorCode::kNoControllerOrFeedEnable;
   }
@@ -253,7 +252,10 @@ ErrorCode ServoAxis::start_halt_or_stop(const plc::Command& command) noexcept {
 
 void ServoAxis::accept(JobKind kind, uint16_t number, const Profile& profile, double target,
                        double target_velocity, const Limits& limits) noexcept {
-  const uint16_t running = job_.active() ? job_.number() : 0;
+  // A running homing is replaced as a job would be (MC_Stop aborts it; Homed stays as it is).
+  const uint16_t running =
+      job_.active() ? job_.number() : (homing_.active() ? homing_.number() : 0);
+  homing_.clear();
   job_.start(kind, number, profile, target, target_velocity, limits);
   if (kind == JobKind::kHalt || kind == JobKind::kStop) {
     stack_.on_stop();

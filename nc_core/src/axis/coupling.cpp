@@ -14,8 +14,8 @@ using plc::CommandState;
 using plc::CommandType;
 
 bool ServoAxis::at_rest_for_coupling() const noexcept {
-  return !job_.active() && set_.v == 0.0 && set_.a == 0.0 && !stack_.compensation().running() &&
-         !stack_.external().enabled();
+  return !job_.active() && !homing_.active() && set_.v == 0.0 && set_.a == 0.0 &&
+         !stack_.compensation().running() && !stack_.external().enabled();
 }
 
 bool ServoAxis::refused_while_coupled(CommandType type) noexcept {

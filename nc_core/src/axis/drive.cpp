@@ -24,15 +24,20 @@ void Drive::configure(const AxisConfig& config, double cycle_time, double positi
 }
 
 void Drive::place(double position) noexcept {
-  position_ = position;
-  measured_ = quantise(position);
+  position_ = position - offset_;
+  measured_ = quantise(position_) + offset_;
   velocity_ = 0.0;
   acceleration_ = 0.0;
   std::fill(delay_line_.begin(), delay_line_.end(), 0.0);
 }
 
+void Drive::set_measured(double position) noexcept {
+  offset_ = position - quantise(position_);
+  measured_ = position;
+}
+
 void Drive::follow(double position, double velocity, double acceleration) noexcept {
-  position_ = position;
+  position_ = position - offset_;
   measured_ = position;
   velocity_ = velocity;
   acceleration_ = acceleration;
@@ -64,7 +69,7 @@ void Drive::step(double command, bool enabled) noexcept {
     velocity_ = input;
   }
   acceleration_ = (velocity_ - before) / cycle_time_;
-  measured_ = quantise(position_);
+  measured_ = offset_ == 0.0 ? quantise(position_) : quantise(position_) + offset_;
 }
 
 }  // namespace nc::detail

@@ -30,10 +30,17 @@ class Drive {
 
   // Sets the true position (and the measured one) without motion: used to place an axis.
   void place(double position) noexcept;
+  // Position setting (MC_Home): the measured position shows `position` from now on; the drive
+  // does not move. Later positions are the raw encoder's plus the same offset.
+  void set_measured(double position) noexcept;
+  // The encoder's own position (no position setting applied, not quantised): where its zero
+  // pulses lie.
+  double raw_position() const noexcept { return position_; }
+  double offset() const noexcept { return offset_; }
   // Encoder / virtual axis: the actual values are given (no quantisation, no dynamics).
   void follow(double position, double velocity, double acceleration) noexcept;
 
-  double true_position() const noexcept { return position_; }
+  double true_position() const noexcept { return position_ + offset_; }
   double measured_position() const noexcept { return measured_; }
   double velocity() const noexcept { return velocity_; }
   double acceleration() const noexcept { return acceleration_; }
@@ -50,7 +57,8 @@ class Drive {
   std::vector<double> delay_line_;
   std::size_t delay_head_ = 0;
 
-  double position_ = 0.0;
+  double position_ = 0.0;  // raw
+  double offset_ = 0.0;    // displayed − raw (position setting)
   double measured_ = 0.0;
   double velocity_ = 0.0;
   double acceleration_ = 0.0;

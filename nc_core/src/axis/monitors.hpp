@@ -35,9 +35,14 @@ class Monitors {
   bool in_target_position() const noexcept { return in_target_; }
   bool in_position_area() const noexcept { return in_area_; }
 
-  // Software limits on a position (true: beyond an enabled limit).
-  bool below_min(double p) const noexcept { return min_enabled_ && p < min_; }
-  bool above_max(double p) const noexcept { return max_enabled_ && p > max_; }
+  // Software limits on a position (true: beyond an enabled limit). They count only while the
+  // axis is referenced (homed): an axis that has not homed does not know where its limits are.
+  bool below_min(double p) const noexcept { return referenced_ && min_enabled_ && p < min_; }
+  bool above_max(double p) const noexcept { return referenced_ && max_enabled_ && p > max_; }
+  // The same, at or beyond (a continuous start standing on the limit).
+  bool at_or_below_min(double p) const noexcept { return referenced_ && min_enabled_ && p <= min_; }
+  bool at_or_above_max(double p) const noexcept { return referenced_ && max_enabled_ && p >= max_; }
+  void set_referenced(bool referenced) noexcept { referenced_ = referenced; }
 
  private:
   bool fe_enabled_ = true;
@@ -55,6 +60,7 @@ class Monitors {
   double pr_window_ = 5.0;
   bool in_area_ = false;
 
+  bool referenced_ = true;
   bool min_enabled_ = false;
   bool max_enabled_ = false;
   double min_ = 0.0;

@@ -64,14 +64,15 @@ void ServoAxis::phase_publish(uint64_t cycle_counter) noexcept {
     word |= static_cast<uint32_t>(value) << bit;
   };
   set_bit(plc::kStateOperational, enabled && !error);
-  set_bit(plc::kStateHomed, true);  // no homing yet: every axis counts as homed
+  set_bit(plc::kStateHomed, homed_);
   set_bit(plc::kStateNotMoving, std::abs(drive_.velocity()) < config_.standstill_window);
   set_bit(plc::kStateInPositionArea, monitors_.in_position_area());
   set_bit(plc::kStateInTargetPosition, monitors_.in_target_position());
   set_bit(plc::kStateHasBeenStopped, has_been_stopped_);
-  set_bit(plc::kStateHasJob, job_.active());
+  set_bit(plc::kStateHasJob, job_.active() || homing_.active());
   set_bit(plc::kStatePositiveDirection, set_.v > 0.0);
   set_bit(plc::kStateNegativeDirection, set_.v < 0.0);
+  set_bit(plc::kStateHomingBusy, homing_.active());
   set_bit(plc::kStateConstantVelocity, constant_velocity);
   set_bit(plc::kStateCompensating, stack_.compensation().running());
   set_bit(plc::kStateExtSetPointGenEnabled, stack_.external().enabled());
@@ -93,6 +94,8 @@ void ServoAxis::phase_publish(uint64_t cycle_counter) noexcept {
   } else if (slave_link_.coupled || (hli_target() && kind == JobKind::kNone)) {
     // Also while the master stands still (issue 9); an HLI target's own job shows instead.
     state = AxisState::kSynchronizedMotion;
+  } else if (homing_.active()) {
+    state = AxisState::kHoming;
   } else if (locked_ || kind == JobKind::kStop || kind == JobKind::kEmergencyStop) {
     state = AxisState::kStopping;
   } else if (kind == JobKind::kPosition || kind == JobKind::kHalt) {

@@ -16,6 +16,7 @@ ServoAxis::ServoAxis(const AxisConfig& config, double cycle_time, std::size_t in
   controller_.feed_forward = config_.velocity_feed_forward;
   drive_.configure(config_, cycle_time_, 0.0);
   monitors_.configure(config_, cycle_time_);
+  set_homed(config_.homed_at_start);
   set_ = KinematicState{drive_.measured_position(), 0.0, 0.0};
   previous_set_position_ = set_.p;
   target_ = set_.p;
@@ -94,7 +95,7 @@ void ServoAxis::check_enables() noexcept {
   if (!channel_.controller_enabled()) {
     // Losing the controller enable during a job is an axis error; there is no ramp to run (the
     // drive is off), so the job ends here and the set values follow the actual position.
-    if (job_.active() && job_.kind() != JobKind::kEmergencyStop) {
+    if ((job_.active() && job_.kind() != JobKind::kEmergencyStop) || homing_.active()) {
       raise_error(ErrorCode::kControllerEnableMissing);
     }
     job_.clear();
@@ -102,7 +103,8 @@ void ServoAxis::check_enables() noexcept {
   }
   // Feed enable removed in the direction of travel: the axis stops on its error ramp (also when
   // external setpoints move it; a coupled slave's error stops its group, see Kernel).
-  if ((job_.is_motion() || stack_.external().enabled() || slave_link_.coupled) &&
+  if ((job_.is_motion() || homing_.active() || stack_.external().enabled() ||
+       slave_link_.coupled) &&
       !channel_.has_error()) {
     if (set_.v > 0.0 && !channel_.feed_enabled(1.0)) {
       raise_error(ErrorCode::kFeedEnablePlusMissing);
@@ -151,6 +153,9 @@ void ServoAxis::generate_set_values(std::span<const AxisSnapshot> snapshots) noe
       set_jerk_ = slave_link_.factor * master.set_jerk;
       break;
     }
+    case SetValueSource::kHomingJob:
+      run_homing();
+      break;
     case SetValueSource::kHold:
       if (stack_.moves_alone()) {
         base_.v = 0.0;  // the basic motion holds; a superposition may still move the axis
@@ -198,6 +203,7 @@ BasicPath ServoAxis::basic_path() const noexcept {
 
 SetValueSource ServoAxis::source() const noexcept {
   if (slave_link_.coupled) return SetValueSource::kSlaveLink;  // a coupled slave has no job
+  if (homing_.active()) return SetValueSource::kHomingJob;
   if (job_.active()) return SetValueSource::kPtpJob;
   const ExternalSetpoint& external = stack_.external();
   if (external.taking() && external.type() == ExternalSetpoint::Type::kAbsolute) {
@@ -249,11 +255,17 @@ void ServoAxis::run_monitors() noexcept {
   // through its target window is not "in target position".
   const bool settled =
       channel_.controller_enabled() && !stack_.external().moving() && !slave_link_.coupled &&
+      !homing_.active() &&
       (!job_.active() || (job_.kind() != JobKind::kVelocity && job_.generation_ended()));
   monitors_.windows(actual - drive_offset_, target_, settled);  // in program coordinates
 }
 
 void ServoAxis::finish_job() noexcept {
+  if (homing_.finished()) {
+    channel_.answer_current(CommandState::kDone);
+    homing_.clear();
+    target_ = set_.p;  // where the homing stopped: the windows watch it from now on
+  }
   switch (job_.kind()) {
     case JobKind::kNone:
       break;
@@ -289,6 +301,12 @@ void ServoAxis::raise_error(ErrorCode code) noexcept {
   has_been_stopped_ = true;
   if (job_.active() && channel_.runs(job_.number())) {
     channel_.answer_current(CommandState::kError, plc::to_id(code));
+  }
+  if (homing_.active()) {
+    if (channel_.runs(homing_.number())) {
+      channel_.answer_current(CommandState::kError, plc::to_id(code));
+    }
+    homing_.clear();
   }
   // The compensation fails with the axis; external generation is switched off (seed 000 §2.6).
   fold_superpositions(CommandState::kError, code);

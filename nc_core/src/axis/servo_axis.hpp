@@ -23,6 +23,7 @@
 #include "axis/set_value_source.hpp"
 #include "axis/slave_link.hpp"
 #include "axis/superposition_stack.hpp"
+#include "homing/homing_job.hpp"
 #include "nc_core/axis_config.hpp"
 #include "nc_core/axis_snapshot.hpp"
 #include "nc_core/coupling_graph.hpp"
@@ -60,6 +61,8 @@ class ServoAxis {
   plc::AXIS_REF& ref() noexcept { return channel_.ref(); }
   const plc::AXIS_REF& ref() const noexcept { return channel_.ref(); }
   const AxisConfig& config() const noexcept { return config_; }
+  // The simulated reference cam's digital input (AxisConfig::homing_cam_*), on the raw encoder.
+  bool reference_cam() const noexcept;
 
   // The phases of one NC cycle (steps a … f of docs/architecture.md "One tick"); the kernel
   // calls each for every axis before the next. The snapshot is what other axes may read.
@@ -177,6 +180,14 @@ class ServoAxis {
   // setpoint generation (compensation is allowed: C5).
   static bool refused_while_coupled(plc::CommandType type) noexcept;
 
+  // --- homing/home_command.cpp (MC_Home, SPEC F; docs/behaviour.md "Homing") ---
+  ErrorCode start_home(const plc::Command& command) noexcept;
+  // Position setting: every displayed position (set, actual, target) moves by `delta`; nothing
+  // moves physically and the following error stays.
+  void shift_position(double delta) noexcept;
+  // Phase b with the homing job as the source.
+  void run_homing() noexcept;
+
   // --- modulo.cpp (B1 modulo start, seed 000 §2.1) ---
   ErrorCode start_modulo(const plc::Command& command) noexcept;
 
@@ -201,6 +212,7 @@ class ServoAxis {
   Profile& scratch_;  // a start is planned here first, so a refusal changes nothing
 
   MasterJob job_{};
+  HomingJob homing_{};
   PositionController controller_{};
   Drive drive_{};
   Monitors monitors_{};
@@ -235,6 +247,12 @@ class ServoAxis {
   double previous_measured_ = 0.0;
   double target_ = 0.0;  // end position of the last positioning / stop; window monitors use it
 
+  // Referenced (StateDWord bit 1): the software limits are monitored only then.
+  bool homed_ = true;
+  void set_homed(bool homed) noexcept {
+    homed_ = homed;
+    monitors_.set_referenced(homed);
+  }
   bool locked_ = false;  // MC_Stop: motion commands refused until kStopRelease
   bool has_been_stopped_ = false;
   bool error_event_ = false;  // an error was raised in this cycle

@@ -19,7 +19,8 @@ enum class SetValueSource : uint8_t {
                       // online functions (override, new end position, new velocity)
   kExternalAbsolute,  // ExternalSetpoint of type absolute: the PLC's set values (seed 000 §2.6)
   kSlaveLink,         // SlaveLink: factor × the master's set values + offset (SPEC C1)
-  // Next: kHomingJob (homing), kTwoSpeedSequencer (two-speed axis).
+  kHomingJob,         // HomingJob: MC_Home's default homing sequence (homing/homing_job.hpp)
+  // Next: kTwoSpeedSequencer (two-speed axis).
 };
 
 }  // namespace nc::detail

@@ -94,6 +94,7 @@ ErrorCode ServoAxis::enable_external(const plc::Command& command) noexcept {
   if (stack_.compensation().running()) return ErrorCode::kCompensationActive;
   if (is_stop(job_.kind())) return ErrorCode::kStopAlreadyActive;
   if (locked_) return ErrorCode::kMotionCommandsLocked;
+  if (homing_.active()) return ErrorCode::kFunctionNotAllowed;  // the homing sequence owns it
   // Beside an internal motion only the relative type: two absolute sources cannot coexist.
   if (type == Type::kAbsolute && job_.active()) return ErrorCode::kStartTypeNotAllowed;
 

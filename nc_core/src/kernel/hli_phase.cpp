@@ -70,7 +70,7 @@ void HliPhase::run(std::span<const std::unique_ptr<ServoAxis>> axes,
     q_[i] = snapshots[i].set_position;
     qv_[i] = snapshots[i].set_velocity;
     qa_[i] = snapshots[i].set_acceleration;
-    // The homed bit as last published (no homing yet: every axis counts as homed).
+    // The homed bit as last published (AxisConfig::homed_at_start, MC_Home).
     referenced_[i] = plc::test_bit(axes[i]->ref().NcToPlc.StateDWord, plc::kStateHomed);
     refusal_[i] = refusal(*axes[i]);
     pending_[i] = plc::ErrorCode::kNone;

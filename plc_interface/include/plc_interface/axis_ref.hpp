@@ -45,6 +45,9 @@ enum ControlBit : uint32_t {
   kControlEnable = 0,
   kControlFeedEnablePlus = 1,
   kControlFeedEnableMinus = 2,
+  // The reference cam (MC_Home.bCalibrationCam, TwinCAT's "homing sensor" bit): the NC samples it
+  // while a default homing runs.
+  kControlHomingSensor = 5,
 };
 
 // PLCopen axis state (Tc2_MC2 MC_AxisStates values), published in NcToPlc.AxisState.

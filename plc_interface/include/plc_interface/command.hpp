@@ -37,6 +37,20 @@ enum MC_BufferMode : int32_t {
   MC_BlendingHigh = 5,
 };
 
+enum MC_HomingMode : int32_t {
+  MC_DefaultHoming = 0,  // the NC's sequence: reference cam, then sync pulse (or cam edge)
+  MC_AbsSwitch = 1,      // refused by ncsdk (as by Tc2_MC2)
+  MC_LimitSwitch = 2,    // refused
+  MC_RefPulse = 3,       // refused
+  MC_Direct = 4,         // set the position, no motion
+  MC_ForceCalibration = 5,
+  MC_ResetCalibration = 6,
+};
+
+// MC_Home.Position's default (Tc2_MC2's DEFAULT_HOME_POSITION): take the axis's configured
+// reference position (AxisConfig::homing_reference_position) instead.
+inline constexpr double DEFAULT_HOME_POSITION = 99999999999.0;
+
 // What a command asks the NC to do. Values are stable: they appear in traces.
 enum class CommandType : uint16_t {
   kNone = 0,
@@ -59,7 +73,8 @@ enum class CommandType : uint16_t {
                     // posted to the slave's mailbox
   kGearInDyn = 16,  // ratio (initial), acceleration = AccBound, other_axis = master
   kGearOut = 17,    // posted to the slave's mailbox
-  kHome = 18,       // position = home position, mode = homing mode
+  kHome = 18,       // position = home position (DEFAULT_HOME_POSITION: the configured one),
+                    // mode = MC_HomingMode
 };
 
 // Lifecycle of one command number, as the NC reports it in the answer table.

@@ -84,6 +84,11 @@ enum class ErrorCode : uint32_t {
   kCouplingLoop = 0x4F0D,              // coupling would close a loop (also master = slave)
   kGearRatioOutOfRange = 0x4F71,       // MC_GearIn ratio above 1e6 in size
   kStartFarOutsideLimits = 0x4F70,  // planner start 2e6 times outside the limits or 1e15 from rest
+  // Homing (MC_Home; ncsdk's range 0x4F20 … 0x4F2F).
+  kHomingCamNotFound = 0x4F20,        // no reference cam within the search distance
+  kHomingModeNotSupported = 0x4F21,   // MC_AbsSwitch, MC_LimitSwitch, MC_RefPulse
+  kHomingSyncPulseNotFound = 0x4F22,  // cam edge or sync pulse not within the search distance
+  kHomingAxisMoving = 0x4F23,         // MC_Direct while the axis has a job or moves
 
   // --- CNC HLI coupling IDs (decimal) ---
   kHliFractOnReferencedAxis = 70195,
