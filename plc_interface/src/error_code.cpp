@@ -137,6 +137,8 @@ std::string_view error_text(ErrorCode code) noexcept {
       return "two-speed axis: distance to the target not larger than the braking distance";
     case E::kCouplingLoop:
       return "coupling would close a loop (or master = slave)";
+    case E::kBufferFull:
+      return "a buffered command already waits on this axis";
     case E::kHliFractOnReferencedAxis:
       return "FRACT coupling: the axis cannot stop before a software limit";
     case E::kHliChangeWhileMoving:

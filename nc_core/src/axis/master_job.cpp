@@ -92,6 +92,16 @@ double reduced_level(const Profile& profile, double velocity) noexcept {
   return peak >= velocity * (1.0 - kLevelTolerance) ? velocity : peak;
 }
 
+bool moves_only_along(const Profile& profile, double direction) noexcept {
+  double scale = 0.0;
+  double lowest = 0.0;
+  for_each_extremum(profile, [&](double v, double) {
+    scale = std::max(scale, std::abs(v));
+    lowest = std::min(lowest, direction * v);
+  });
+  return lowest >= -kLevelTolerance * std::max(1.0, scale);
+}
+
 void MasterJob::start(JobKind kind, uint16_t number, const Profile& profile, double target,
                       double target_velocity, const Limits& limits) noexcept {
   kind_ = kind;
@@ -154,7 +164,7 @@ bool MasterJob::in_brake_phase(double cycle_time) const noexcept {
 }
 
 KinematicState MasterJob::advance(double cycle_time) noexcept {
-  if (ended_) {
+  if (ended_ && !passing()) {
     jerk_ = 0.0;
     state_ = profile_.final_state();
     return state_;
@@ -175,7 +185,7 @@ KinematicState MasterJob::advance(double cycle_time) noexcept {
     // A rest for override 0 holds its end but does not end the job.
     ended_ = final_;
     jerk_ = 0.0;
-    state_ = profile_.final_state();
+    state_ = passing() ? profile_.at(t) : profile_.final_state();  // a pass goes on at its v
     return state_;
   }
   jerk_ = profile_.jerk_at(t);

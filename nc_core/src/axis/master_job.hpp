@@ -20,6 +20,10 @@
 // Stop planned in the brake phase is marked as braking too (mark_brake_phase()), so that no later
 // stop sharpens it (seed 000 §2.2: no emergency stop in the brake phase).
 //
+// A passing table (BufferMode blending, docs/behaviour.md "BufferMode") ends at its target with a
+// velocity: past its end the job goes on at that velocity (the profile extrapolates) until the
+// buffered command takes over in the next cycle.
+//
 // Cycle functions only: noexcept, no allocation.
 #pragma once
 
@@ -61,6 +65,9 @@ bool reaches_level(const Profile& profile, double level) noexcept;
 // rounding), otherwise its peak — seed 000 §2.2's level "calculated and possibly reduced at the
 // start".
 double reduced_level(const Profile& profile, double velocity) noexcept;
+// The table never moves against `direction` (+1 / -1): |v| along it is >= 0 everywhere, up to
+// rounding (a blend's pass must not overshoot and return).
+bool moves_only_along(const Profile& profile, double direction) noexcept;
 // PlcToNc.Override as a factor 0 … 1 (exactly 1 at 1'000'000).
 inline double override_factor(uint32_t override_value) noexcept {
   return static_cast<double>(override_value) / static_cast<double>(plc::kOverrideFull);
@@ -92,6 +99,8 @@ class MasterJob {
     return kind_ == JobKind::kPosition || kind_ == JobKind::kVelocity;
   }
   uint16_t number() const noexcept { return number_; }
+  // A positioning whose table passes its target with a velocity (blending).
+  bool passing() const noexcept { return kind_ == JobKind::kPosition && profile_.holds_velocity(); }
   // Set-value generation has ended (positioning, halt, stop): the final state is output.
   bool generation_ended() const noexcept { return ended_; }
   // A velocity job holds its (non-zero) constant velocity.

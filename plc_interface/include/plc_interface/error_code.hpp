@@ -69,9 +69,9 @@ enum class ErrorCode : uint32_t {
   kAxisNotReady = 0x4B09,
 
   // --- ncsdk's own numbers ---
-  kPositionNotFinite = 0x4F01,   // target, distance or start position NaN or infinite
-  kParameterNotFinite = 0x4F02,  // another parameter NaN or infinite
-  kBufferModeNotSupported = 0x4F03,
+  kPositionNotFinite = 0x4F01,       // target, distance or start position NaN or infinite
+  kParameterNotFinite = 0x4F02,      // another parameter NaN or infinite
+  kBufferModeNotSupported = 0x4F03,  // BufferMode not one of MC_BufferMode's values
   kMailboxFull = 0x4F04,
   kUnknownCommand = 0x4F05,
   kAxisInErrorState = 0x4F06,  // motion refused until MC_Reset
@@ -82,6 +82,7 @@ enum class ErrorCode : uint32_t {
   kActualValueNotFinite = 0x4F0B,      // an actual value read by a block is NaN or infinite
   kTwoSpeedDistanceTooShort = 0x4F0C,  // two-speed start not farther than the braking distance
   kCouplingLoop = 0x4F0D,              // coupling would close a loop (also master = slave)
+  kBufferFull = 0x4F60,                // a buffered command already waits on this axis
 
   // --- CNC HLI coupling IDs (decimal) ---
   kHliFractOnReferencedAxis = 70195,
