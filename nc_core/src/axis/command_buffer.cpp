@@ -95,7 +95,8 @@ bool ServoAxis::ready_for_next() const noexcept {
     case JobKind::kNone:
       return true;
     case JobKind::kPosition:
-      return job_.generation_ended() && job_.final_table();
+      return job_.final_table() &&
+             (job_.generation_ended() || job_.passes_in_next_cycle(cycle_time_));
     case JobKind::kHalt:
       return job_.generation_ended();
     case JobKind::kVelocity:
@@ -135,10 +136,26 @@ void ServoAxis::take_next(CouplingPort& port) noexcept {
   if (job_.kind() == JobKind::kPosition || job_.kind() == JobKind::kHalt) {
     if (channel_.runs(job_.number())) channel_.answer_current(CommandState::kDone);
   }
-  if (code == ErrorCode::kNone) code = handle_now(next, port);
+  if (code == ErrorCode::kNone) {
+    const KinematicState basic = basic_state();
+    const bool exact = job_.passes_in_next_cycle(cycle_time_) && basic.p == set_.p &&
+                       basic.v == set_.v && basic.a == set_.a;
+    if (exact) {
+      // The pass ends within this cycle: the next command starts from the pass's end state at
+      // its end time, so its first sample lies between 0 and T after the target.
+      const KinematicState now = set_;
+      const double offset = job_.sample_time(cycle_time_) - job_.table_duration();
+      set_ = job_.table_end();
+      code = handle_now(next, port);
+      set_ = now;
+      if (code == ErrorCode::kNone && job_.number() == next.number) job_.set_time_offset(offset);
+    } else {
+      code = handle_now(next, port);
+    }
+  }
   if (code != ErrorCode::kNone) {
     channel_.answer(next.number, CommandState::kError, plc::to_id(code));
-    if (job_.passing() && job_.generation_ended()) stop_pass();
+    if (job_.passing()) stop_pass();
   }
 }
 

@@ -119,6 +119,7 @@ void MasterJob::start(JobKind kind, uint16_t number, const Profile& profile, dou
 void MasterJob::install(const Profile& profile, bool final) noexcept {
   profile_ = profile;
   k_ = 0;
+  offset_ = 0.0;
   ended_ = false;
   reached_ = false;
   jerk_ = 0.0;
@@ -130,6 +131,12 @@ void MasterJob::install(const Profile& profile, bool final) noexcept {
 
 void MasterJob::replan(const Profile& profile, bool final) noexcept {
   install(profile, final);
+}
+
+bool MasterJob::passes_in_next_cycle(double cycle_time) const noexcept {
+  if (!passing() || ended_) return false;
+  const double end = profile_.duration();
+  return sample_time(cycle_time) + cycle_time >= end - kEndTolerance * std::max(1.0, end);
 }
 
 void MasterJob::mark_brake_phase() noexcept {
@@ -159,7 +166,7 @@ void MasterJob::set_levels(double user_velocity, double reduced_velocity,
 bool MasterJob::in_brake_phase(double cycle_time) const noexcept {
   if (!has_brake_phase_) return false;
   if (ended_) return true;
-  const double t = static_cast<double>(k_) * cycle_time;
+  const double t = sample_time(cycle_time);
   return t >= brake_start_ - kEndTolerance * std::max(1.0, brake_start_);
 }
 
@@ -170,7 +177,7 @@ KinematicState MasterJob::advance(double cycle_time) noexcept {
     return state_;
   }
   ++k_;
-  const double t = static_cast<double>(k_) * cycle_time;
+  const double t = sample_time(cycle_time);
   const double end = profile_.duration();
   const bool at_end = t >= end - kEndTolerance * std::max(1.0, end);
   if (kind_ == JobKind::kVelocity) {

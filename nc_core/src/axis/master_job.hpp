@@ -21,8 +21,10 @@
 // stop sharpens it (seed 000 §2.2: no emergency stop in the brake phase).
 //
 // A passing table (BufferMode blending, docs/behaviour.md "BufferMode") ends at its target with a
-// velocity: past its end the job goes on at that velocity (the profile extrapolates) until the
-// buffered command takes over in the next cycle.
+// velocity. The buffered command takes over in the cycle whose sample passes that end: it is
+// planned from the table's end state and sampled from the time since that end (a time offset),
+// so the pass is exact. Past its end a pass left alone goes on at its velocity (the profile
+// extrapolates).
 //
 // Cycle functions only: noexcept, no allocation.
 #pragma once
@@ -86,6 +88,18 @@ class MasterJob {
   void replan(const Profile& profile, bool final) noexcept;
   // The whole running table counts as brake phase (a Halt / Stop planned in one).
   void mark_brake_phase() noexcept;
+  // Right after start(): the table's t = 0 lies `offset` s after the last sample (offset <= 0:
+  // the table began between two cycles), so sample k is taken at k·T + offset.
+  void set_time_offset(double offset) noexcept { offset_ = offset; }
+  // The time of the last sample on the running table's clock (k·T + offset).
+  double sample_time(double cycle_time) const noexcept {
+    return static_cast<double>(k_) * cycle_time + offset_;
+  }
+  // A passing table whose end falls within the next cycle.
+  bool passes_in_next_cycle(double cycle_time) const noexcept;
+  // The running table's end state (a pass: the target at its pass velocity).
+  KinematicState table_end() const noexcept { return profile_.final_state(); }
+  double table_duration() const noexcept { return profile_.duration(); }
 
   // The set values of the next cycle. Call once per cycle while kind() != kNone.
   KinematicState advance(double cycle_time) noexcept;
@@ -141,6 +155,7 @@ class MasterJob {
   JobKind kind_ = JobKind::kNone;
   uint16_t number_ = 0;
   uint64_t k_ = 0;
+  double offset_ = 0.0;  // s; see set_time_offset()
   bool ended_ = false;
   bool reached_ = false;
   bool final_ = true;
