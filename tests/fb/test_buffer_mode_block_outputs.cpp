@@ -162,45 +162,44 @@ TEST_CASE("MC_Stop and an aborting MC_Halt drop the waiting command (CommandAbor
   REQUIRE(r.second.CommandAborted);
 }
 
+namespace {
+
+// Starts the rig's first move and `block` buffered behind it in the same PLC cycle; runs until
+// `block` is Done (its outputs checked at every call, never Active while the first is Busy) and
+// returns the set position there.
+template <class Block>
+double run_behind_first(Block& block) {
+  Rig r;
+  r.plc_cycle();
+  r.first.Execute = true;
+  block.Execute = true;
+  r.each_call = [&] {
+    block(*r.axis);
+    check_rules(block);
+    if (r.first.Busy) REQUIRE_FALSE(block.Active);
+  };
+  REQUIRE(r.run_until([&] { return block.Done; }));
+  return r.axis->NcToPlc.SetPos;
+}
+
+}  // namespace
+
 TEST_CASE("buffered MC_MoveRelative and MC_MoveModulo count from the first command's target",
           "[fb][buffer]") {
-  SECTION("MoveRelative 500, MC_Buffered, ends at 1500") {
-    Rig r;
-    r.plc_cycle();
+  SECTION("MoveRelative 500, MC_BlendingPrevious, ends at 1500") {
     fb::MC_MoveRelative rel;
     rel.Distance = 500.0;
     rel.Velocity = 2000.0;
     rel.BufferMode = fb::MC_BlendingPrevious;
-    r.first.Execute = true;
-    rel.Execute = true;
-    bool done = false;
-    r.each_call = [&] {
-      rel(*r.axis);
-      check_rules(rel);
-      if (r.first.Busy) REQUIRE_FALSE(rel.Active);
-      done = rel.Done;
-    };
-    REQUIRE(r.run_until([&] { return done; }));
-    REQUIRE(r.axis->NcToPlc.SetPos == 1500.0);
+    REQUIRE(run_behind_first(rel) == 1500.0);
   }
   SECTION("MoveModulo 200 positive, MC_BlendingNext, ends at 1280") {
-    Rig r;
-    r.plc_cycle();
     fb::MC_MoveModulo modulo;  // modulo factor 360: 1000 is 280, the next 200 ahead is 1280
     modulo.Position = 200.0;
     modulo.Velocity = 800.0;
     modulo.Direction = fb::MC_Positive_Direction;
     modulo.BufferMode = fb::MC_BlendingNext;
-    r.first.Execute = true;
-    modulo.Execute = true;
-    bool done = false;
-    r.each_call = [&] {
-      modulo(*r.axis);
-      check_rules(modulo);
-      done = modulo.Done;
-    };
-    REQUIRE(r.run_until([&] { return done; }));
-    REQUIRE(r.axis->NcToPlc.SetPos == 1280.0);
+    REQUIRE(run_behind_first(modulo) == 1280.0);
   }
 }
 
