@@ -7,7 +7,8 @@
 // - a first leg too short to reach the wanted speed (0 → 100, then BlendingHigh at 2000) passes at
 //   what it can reach, never moving backwards;
 // - override 50 % halves the pass (BlendingLow: 500 mm/s); MC_NewPos 1500 moves the pass there;
-// - a blend posted while the first already brakes never moves backwards.
+// - a blend posted while the first already brakes never moves backwards;
+// - a MoveVelocity (current direction, 1500 mm/s, BlendingNext) passes the target at 1500 mm/s.
 // Every run ends exactly at its last target with |a| <= A and |Δa| <= J·T every cycle.
 #include <catch2/catch.hpp>
 
@@ -128,4 +129,23 @@ TEST_CASE("a blend posted while the first already brakes never moves backwards",
     CHECK(r.max_position == 2000.0);
     CHECK(r.final_position == 2000.0);
   }
+}
+
+TEST_CASE("MoveVelocity blended behind a positioning passes its target at its velocity",
+          "[kernel][buffer]") {
+  kt::Harness h;
+  h.post(kt::move_absolute(1000.0, 1000.0));
+  h.cycles(1);
+  const uint16_t jog =
+      h.post(with_mode(kt::move_velocity(1500.0, plc::MC_Current_Direction), plc::MC_BlendingNext));
+  double pass = -1.0;
+  const int n = h.cycles_until(
+      [&] {
+        if (pass < 0.0 && h.x->NcToPlc.SetPos >= 1000.0) pass = h.x->NcToPlc.SetVelo;
+        return h.state_of(jog) == CommandState::kReached;
+      },
+      5000);
+  REQUIRE(n > 0);
+  CHECK(pass == Approx(1500.0).margin(0.1));
+  CHECK(h.x->NcToPlc.SetVelo == 1500.0);
 }
