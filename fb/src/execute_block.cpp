@@ -45,6 +45,7 @@ ExecuteOutputs ExecuteBlock::end_call(const plc::AXIS_REF& axis) noexcept {
     reached_ = answer.state == plc::CommandState::kReached;
     switch (answer.state) {
       case plc::CommandState::kPosted:
+      case plc::CommandState::kBuffered:  // waiting behind the running command: not Active
         out.busy = true;
         break;
       case plc::CommandState::kActive:
@@ -79,7 +80,9 @@ ExecuteOutputs ExecuteBlock::end_call(const plc::AXIS_REF& axis) noexcept {
 }
 
 Start motion_start(plc::CommandType type, const MotionInputs& inputs) noexcept {
-  if (inputs.buffer_mode != MC_Aborting) return refuse(plc::ErrorCode::kBufferModeNotSupported);
+  if (inputs.buffer_mode < MC_Aborting || inputs.buffer_mode > MC_BlendingHigh) {
+    return refuse(plc::ErrorCode::kBufferModeNotSupported);
+  }
   Start start;
   start.command.type = type;
   start.command.position = inputs.position;

@@ -150,6 +150,8 @@ std::string_view error_text(ErrorCode code) noexcept {
       return "homing: cam edge or sync pulse not found within the search distance";
     case E::kHomingAxisMoving:
       return "homing: setting the position needs the axis at rest without a job";
+    case E::kBufferFull:
+      return "a buffered command already waits on this axis";
     case E::kHliFractOnReferencedAxis:
       return "FRACT coupling: the axis cannot stop before a software limit";
     case E::kHliChangeWhileMoving:

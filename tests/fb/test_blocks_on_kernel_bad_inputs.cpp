@@ -167,8 +167,10 @@ std::vector<Case> cases() {
                  [](Blocks& b, double v) { b.abs.Velocity = v; });
   move_dynamics("MC_MoveAbsolute", W::kMoveAbsolute,
                 [](Blocks& b) -> fb::MC_MoveAbsolute& { return b.abs; });
-  c.push_back({"MC_MoveAbsolute.BufferMode = MC_Buffered", W::kMoveAbsolute,
-               [](Blocks& b, fb::MC_Power&) { b.abs.BufferMode = fb::MC_Buffered; }, 0x4F03});
+  c.push_back(
+      {"MC_MoveAbsolute.BufferMode = 6", W::kMoveAbsolute,
+       [](Blocks& b, fb::MC_Power&) { b.abs.BufferMode = static_cast<fb::MC_BufferMode>(6); },
+       0x4F03});
 
   // MC_MoveRelative
   for (const double d : {kNaN, kInf, -kInf}) {
@@ -183,8 +185,10 @@ std::vector<Case> cases() {
                  [](Blocks& b, double v) { b.rel.Velocity = v; });
   move_dynamics("MC_MoveRelative", W::kMoveRelative,
                 [](Blocks& b) -> fb::MC_MoveRelative& { return b.rel; });
-  c.push_back({"MC_MoveRelative.BufferMode = MC_BlendingLow", W::kMoveRelative,
-               [](Blocks& b, fb::MC_Power&) { b.rel.BufferMode = fb::MC_BlendingLow; }, 0x4F03});
+  c.push_back(
+      {"MC_MoveRelative.BufferMode = -1", W::kMoveRelative,
+       [](Blocks& b, fb::MC_Power&) { b.rel.BufferMode = static_cast<fb::MC_BufferMode>(-1); },
+       0x4F03});
 
   // MC_MoveVelocity
   velocity_cases("MC_MoveVelocity", W::kMoveVelocity,
@@ -197,15 +201,19 @@ std::vector<Case> cases() {
                  W::kMoveVelocity, [d](Blocks& b, fb::MC_Power&) { b.velo.Direction = d; },
                  0x4F07});
   }
-  c.push_back({"MC_MoveVelocity.BufferMode = MC_BlendingHigh", W::kMoveVelocity,
-               [](Blocks& b, fb::MC_Power&) { b.velo.BufferMode = fb::MC_BlendingHigh; }, 0x4F03});
+  c.push_back(
+      {"MC_MoveVelocity.BufferMode = 42", W::kMoveVelocity,
+       [](Blocks& b, fb::MC_Power&) { b.velo.BufferMode = static_cast<fb::MC_BufferMode>(42); },
+       0x4F03});
 
   // MC_Halt and MC_Stop: Deceleration and Jerk (0 = the running motion's).
   dynamics_cases("MC_Halt", W::kHalt, "Deceleration", 0x4230,
                  [](Blocks& b, double v) { b.halt.Deceleration = v; });
   dynamics_cases("MC_Halt", W::kHalt, "Jerk", 0x422E, [](Blocks& b, double v) { b.halt.Jerk = v; });
-  c.push_back({"MC_Halt.BufferMode = MC_BlendingNext", W::kHalt,
-               [](Blocks& b, fb::MC_Power&) { b.halt.BufferMode = fb::MC_BlendingNext; }, 0x4F03});
+  c.push_back(
+      {"MC_Halt.BufferMode = 7", W::kHalt,
+       [](Blocks& b, fb::MC_Power&) { b.halt.BufferMode = static_cast<fb::MC_BufferMode>(7); },
+       0x4F03});
   dynamics_cases("MC_Stop", W::kStop, "Deceleration", 0x4230,
                  [](Blocks& b, double v) { b.stop.Deceleration = v; });
   dynamics_cases("MC_Stop", W::kStop, "Jerk", 0x422E, [](Blocks& b, double v) { b.stop.Jerk = v; });

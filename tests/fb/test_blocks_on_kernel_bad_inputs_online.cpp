@@ -193,8 +193,8 @@ std::vector<Case> cases() {
                  [d](Blocks& b) { b.modulo.Direction = static_cast<fb::MC_Direction>(d); },
                  0x4F07});
   }
-  c.push_back({"MC_MoveModulo.BufferMode = MC_Buffered", W::kMoveModulo,
-               [](Blocks& b) { b.modulo.BufferMode = fb::MC_Buffered; }, 0x4F03});
+  c.push_back({"MC_MoveModulo.BufferMode = 6", W::kMoveModulo,
+               [](Blocks& b) { b.modulo.BufferMode = static_cast<fb::MC_BufferMode>(6); }, 0x4F03});
   c.push_back({"MC_MoveModulo.Direction = MC_Current_Direction at standstill",
                W::kMoveModulo,
                [](Blocks& b) { b.modulo.Direction = fb::MC_Current_Direction; },

@@ -1,17 +1,17 @@
-// Checks a block makes itself, because the NC cannot know them: buffer modes other than
-// MC_Aborting (0x4F03), an MC_MoveVelocity direction other than positive, negative or current,
-// an MC_MoveModulo direction other than the four MC_Direction values (0x4F07), and a full
+// Checks a block makes itself, because the NC cannot know them: a BufferMode that is not an
+// MC_BufferMode value (0x4F03), an MC_MoveVelocity direction other than positive, negative or
+// current, an MC_MoveModulo direction other than the four MC_Direction values (0x4F07), and a full
 // mailbox (0x4F04). Each shows Error at once and posts nothing.
 #include <catch2/catch.hpp>
 
 #include "block_under_test.hpp"
 
-TEMPLATE_TEST_CASE("a buffer mode other than MC_Aborting gives Error 0x4F03 and posts nothing",
+TEMPLATE_TEST_CASE("a buffer mode outside MC_BufferMode gives Error 0x4F03 and posts nothing",
                    "[fb][local]", fb::MC_MoveAbsolute, fb::MC_MoveRelative, fb::MC_MoveModulo,
                    fb::MC_MoveVelocity, fb::MC_Halt) {
   const fb::MC_BufferMode mode =
-      GENERATE(fb::MC_Buffered, fb::MC_BlendingLow, fb::MC_BlendingPrevious, fb::MC_BlendingNext,
-               fb::MC_BlendingHigh, static_cast<fb::MC_BufferMode>(42));
+      GENERATE(static_cast<fb::MC_BufferMode>(-1), static_cast<fb::MC_BufferMode>(6),
+               static_cast<fb::MC_BufferMode>(42));
   INFO("buffer mode " << static_cast<int>(mode));
   fbtest::Bench<TestType> b;
   b.block.BufferMode = mode;
@@ -23,6 +23,22 @@ TEMPLATE_TEST_CASE("a buffer mode other than MC_Aborting gives Error 0x4F03 and 
   REQUIRE(b.block.command_number() == 0);
   REQUIRE(b.call(true).error_id == 0x4F03);
   REQUIRE_FALSE(b.call(false).error);
+}
+
+TEMPLATE_TEST_CASE("every MC_BufferMode value is posted with its number", "[fb][local]",
+                   fb::MC_MoveAbsolute, fb::MC_MoveRelative, fb::MC_MoveModulo, fb::MC_MoveVelocity,
+                   fb::MC_Halt) {
+  const fb::MC_BufferMode mode =
+      GENERATE(fb::MC_Buffered, fb::MC_BlendingLow, fb::MC_BlendingPrevious, fb::MC_BlendingNext,
+               fb::MC_BlendingHigh);
+  INFO("buffer mode " << static_cast<int>(mode));
+  fbtest::Bench<TestType> b;
+  b.block.BufferMode = mode;
+  REQUIRE(b.call(true).busy);
+  REQUIRE(b.axis.Mailbox.pending() == 1);
+  plc::Command posted;
+  REQUIRE(b.axis.Mailbox.take(posted));
+  REQUIRE(posted.buffer_mode == static_cast<int32_t>(mode));
 }
 
 TEST_CASE("MC_Aborting is posted with buffer mode 0", "[fb][local]") {
@@ -87,7 +103,7 @@ TEST_CASE("MC_MoveModulo accepts the four directions of MC_Direction and no othe
   SECTION("the direction is checked before the buffer mode") {
     fbtest::Bench<fb::MC_MoveModulo> b;
     b.block.Direction = fb::MC_Undefined_Direction;
-    b.block.BufferMode = fb::MC_Buffered;
+    b.block.BufferMode = static_cast<fb::MC_BufferMode>(42);
     REQUIRE(b.call(true).error_id == 0x4F07);
   }
 }

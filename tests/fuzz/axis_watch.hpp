@@ -179,6 +179,7 @@ class AxisWatch {
         return -1;
       case plc::CommandState::kPosted:
         return 0;
+      case plc::CommandState::kBuffered:  // accepted, waits behind the running command
       case plc::CommandState::kActive:
         return 1;
       case plc::CommandState::kReached:

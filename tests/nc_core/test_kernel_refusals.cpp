@@ -52,8 +52,8 @@ std::vector<Bad> bad_dynamics(const plc::Command& good, const std::string& name)
                  ErrorCode::kDecelerationNotAllowed});
   out.push_back({name + " jerk -1", with(good, &C::jerk, -1.0), ErrorCode::kJerkNotAllowed});
   plc::Command buffered = good;
-  buffered.buffer_mode = 1;  // MC_Buffered
-  out.push_back({name + " buffered", buffered, ErrorCode::kBufferModeNotSupported});
+  buffered.buffer_mode = 6;  // not an MC_BufferMode value (MC_BlendingHigh is 5)
+  out.push_back({name + " buffer mode 6", buffered, ErrorCode::kBufferModeNotSupported});
   return out;
 }
 
@@ -119,8 +119,8 @@ TEST_CASE(
   for (const Bad& b : bad_stops(CommandType::kHalt, "Halt"))
     bads.push_back(b);
   plc::Command buffered_halt = kt::simple(CommandType::kHalt);
-  buffered_halt.buffer_mode = 1;
-  bads.push_back({"Halt buffered", buffered_halt, ErrorCode::kBufferModeNotSupported});
+  buffered_halt.buffer_mode = -1;  // not an MC_BufferMode value
+  bads.push_back({"Halt buffer mode -1", buffered_halt, ErrorCode::kBufferModeNotSupported});
   for (const Bad& b : bad_stops(CommandType::kStop, "Stop"))
     bads.push_back(b);
 

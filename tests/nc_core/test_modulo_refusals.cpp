@@ -61,8 +61,8 @@ TEST_CASE("bad MoveModulo inputs are refused with their code and disturb nothing
       {"deceleration -1", with(good, &C::deceleration, -1.0), ErrorCode::kDecelerationNotAllowed});
   bads.push_back({"jerk -1", with(good, &C::jerk, -1.0), ErrorCode::kJerkNotAllowed});
   plc::Command buffered = good;
-  buffered.buffer_mode = 1;
-  bads.push_back({"buffered", buffered, ErrorCode::kBufferModeNotSupported});
+  buffered.buffer_mode = 6;  // not an MC_BufferMode value (MC_BlendingHigh is 5)
+  bads.push_back({"buffer mode 6", buffered, ErrorCode::kBufferModeNotSupported});
   for (const Bad& b : bads)
     expect_refused_without_effect(t, b);
   CHECK(t.probe.x->NcToPlc.SetVelo == 1000.0);

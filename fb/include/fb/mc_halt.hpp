@@ -2,8 +2,8 @@
 //
 // Execute-type block (rules in fb/detail/execute_block.hpp). Done at standstill. Another motion
 // command may take the axis during the halt (CommandAborted). Deceleration or Jerk of 0 mean
-// those of the running motion (the NC substitutes them and validates the rest). Only BufferMode
-// MC_Aborting is supported (others: 0x4F03, nothing posted).
+// those of the running motion (the NC substitutes them and validates the rest). BufferMode: see
+// MC_MoveAbsolute (blending into a halt is MC_Buffered; outside MC_BufferMode: 0x4F03).
 #pragma once
 
 #include <cstdint>

@@ -4,7 +4,12 @@
 // ended (set-value generation finished and, with target-window monitoring, InTargetPosition).
 // Acceleration, Deceleration or Jerk of 0 mean the axis default. Velocity, the dynamics and the
 // target are checked by the NC (0x4221, 0x422E…0x4231, 0x4222, 0x4F01, 0x4F02): the block shows
-// its code. Only BufferMode MC_Aborting is supported (others: 0x4F03, nothing posted).
+// its code. BufferMode: see below (a value outside MC_BufferMode: 0x4F03, nothing posted).
+// BufferMode (Tc2_MC2, one buffered command per axis): MC_Aborting takes the axis at once;
+// MC_Buffered waits (Busy, not Active) until the running command is done and starts at its end
+// of path; MC_BlendingLow / Previous / Next / High let the running positioning pass its target
+// with the lower / first / second / higher velocity (what the path allows, 0 on a reversal) and
+// start there. A second buffered command while one waits: Error 0x4F60, the waiting one stays.
 #pragma once
 
 #include <cstdint>

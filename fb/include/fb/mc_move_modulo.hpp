@@ -9,7 +9,7 @@
 // CommandAborted, Error, ErrorID as MC_MoveAbsolute; the NC checks Position (0x4F01, 0x4282),
 // Velocity and the dynamics (0x4F02, 0x4231, 0x4221, 0x422E…0x4230) and the software limits.
 // Checked here, because the NC cannot tell a bad enum value from a meant one: a Direction
-// other than the four (0x4F07), a BufferMode other than MC_Aborting (0x4F03); nothing posted.
+// other than the four (0x4F07), a BufferMode outside MC_BufferMode (0x4F03); nothing posted.
 #pragma once
 
 #include <cstdint>

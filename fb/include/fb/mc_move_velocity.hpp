@@ -7,7 +7,8 @@
 // MC_Current_Direction (keep the direction of the motion that runs; Tc2_MC2 allows these three;
 // others: 0x4F07, checked here); it is passed to the NC as its MC_Direction value, and the NC
 // refuses MC_Current_Direction where there is no direction to keep. Velocity must be > 0; the
-// NC checks it and the dynamics. Only BufferMode MC_Aborting is supported (others: 0x4F03).
+// NC checks it and the dynamics. BufferMode: see MC_MoveAbsolute (a
+// value outside MC_BufferMode: 0x4F03).
 #pragma once
 
 #include <cstdint>

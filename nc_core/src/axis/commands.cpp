@@ -48,6 +48,18 @@ void ServoAxis::handle(const plc::Command& command, CouplingPort& port) noexcept
                     plc::to_id(ErrorCode::kFunctionNotAllowed));
     return;
   }
+  if (command.buffer_mode != plc::MC_Aborting && bufferable(command.type)) {
+    code = buffer_command(command, port);  // command_buffer.cpp
+  } else {
+    code = handle_now(command, port);
+  }
+  if (code != ErrorCode::kNone) {
+    channel_.answer(command.number, CommandState::kError, plc::to_id(code));
+  }
+}
+
+ErrorCode ServoAxis::handle_now(const plc::Command& command, CouplingPort& port) noexcept {
+  ErrorCode code = ErrorCode::kNone;
   switch (command.type) {
     case CommandType::kMoveAbsolute:
     case CommandType::kMoveRelative:
@@ -97,19 +109,17 @@ void ServoAxis::handle(const plc::Command& command, CouplingPort& port) noexcept
       locked_ = false;
       end_external_generation();  // seed 000 §2.6: an axis reset switches it off
       channel_.answer(command.number, CommandState::kDone);
-      return;
+      break;
     case CommandType::kStopRelease:
       locked_ = false;
       channel_.answer(command.number, CommandState::kDone);
-      return;
+      break;
     default:
       // MC_GearInDyn comes with a later issue; until then the kernel refuses it.
       code = ErrorCode::kUnknownCommand;
       break;
   }
-  if (code != ErrorCode::kNone) {
-    channel_.answer(command.number, CommandState::kError, plc::to_id(code));
-  }
+  return code;
 }
 
 ErrorCode ServoAxis::check_dynamics(const plc::Command& command, Limits& limits) const noexcept {
@@ -142,7 +152,7 @@ ErrorCode ServoAxis::check_start(const plc::Command& command, bool has_position,
   // Seed 000 §2.6: external generation may join a running PTP motion (relative), "the opposite
   // case is not permitted".
   if (stack_.external().enabled()) return ErrorCode::kStartTypeNotAllowed;
-  if (command.buffer_mode != plc::MC_Aborting) return ErrorCode::kBufferModeNotSupported;
+  if (!known_buffer_mode(command.buffer_mode)) return ErrorCode::kBufferModeNotSupported;
   if (has_position && !std::isfinite(command.position)) return ErrorCode::kPositionNotFinite;
   return check_dynamics(command, limits);
 }
@@ -204,12 +214,14 @@ ErrorCode ServoAxis::start_velocity(const plc::Command& command) noexcept {
   return start_continuous(command.number, direction * limits.velocity, limits);
 }
 
-ErrorCode ServoAxis::start_halt_or_stop(const plc::Command& command) noexcept {
+ErrorCode ServoAxis::check_halt_or_stop(const plc::Command& command) const noexcept {
   const bool stop = command.type == CommandType::kStop;
   if (channel_.has_error()) return ErrorCode::kAxisInErrorState;
   // A stop has priority and may replace a stop; a halt is a motion command and is locked out.
   if (!stop && locked_) return ErrorCode::kMotionCommandsLocked;
-  if (!stop && command.buffer_mode != plc::MC_Aborting) return ErrorCode::kBufferModeNotSupported;
+  if (!stop && !known_buffer_mode(command.buffer_mode)) {
+    return ErrorCode::kBufferModeNotSupported;
+  }
   if (!std::isfinite(command.deceleration) || !std::isfinite(command.jerk)) {
     return ErrorCode::kParameterNotFinite;
   }
@@ -223,6 +235,12 @@ ErrorCode ServoAxis::start_halt_or_stop(const plc::Command& command) noexcept {
     return code;
   }
   if (!channel_.controller_enabled()) return ErrorCode::kNoControllerOrFeedEnable;
+  return ErrorCode::kNone;
+}
+
+ErrorCode ServoAxis::start_halt_or_stop(const plc::Command& command) noexcept {
+  const bool stop = command.type == CommandType::kStop;
+  if (const ErrorCode code = check_halt_or_stop(command); code != ErrorCode::kNone) return code;
 
   // 0 = the running motion's deceleration and jerk, or the axis default when nothing runs.
   const bool motion =
@@ -256,6 +274,9 @@ void ServoAxis::accept(JobKind kind, uint16_t number, const Profile& profile, do
   const uint16_t running =
       job_.active() ? job_.number() : (homing_.active() ? homing_.number() : 0);
   homing_.clear();
+  // A new job in place of the running one: a command waiting behind that one is dropped (when
+  // the waiting command itself starts here, the buffer is already empty).
+  drop_buffer(CommandState::kAborted);
   job_.start(kind, number, profile, target, target_velocity, limits);
   if (kind == JobKind::kHalt || kind == JobKind::kStop) {
     stack_.on_stop();

@@ -92,6 +92,16 @@ double reduced_level(const Profile& profile, double velocity) noexcept {
   return peak >= velocity * (1.0 - kLevelTolerance) ? velocity : peak;
 }
 
+bool moves_only_along(const Profile& profile, double direction) noexcept {
+  double scale = 0.0;
+  double lowest = 0.0;
+  for_each_extremum(profile, [&](double v, double) {
+    scale = std::max(scale, std::abs(v));
+    lowest = std::min(lowest, direction * v);
+  });
+  return lowest >= -kLevelTolerance * std::max(1.0, scale);
+}
+
 void MasterJob::start(JobKind kind, uint16_t number, const Profile& profile, double target,
                       double target_velocity, const Limits& limits) noexcept {
   kind_ = kind;
@@ -110,6 +120,7 @@ void MasterJob::install(const Profile& profile, bool final) noexcept {
   profile_ = profile;
   chain_.count = 0;
   k_ = 0;
+  offset_ = 0.0;
   ended_ = false;
   reached_ = false;
   jerk_ = 0.0;
@@ -149,6 +160,12 @@ void MasterJob::replan(const Profile& profile, bool final) noexcept {
   install(profile, final);
 }
 
+bool MasterJob::passes_in_next_cycle(double cycle_time) const noexcept {
+  if (!passing() || ended_) return false;
+  const double end = profile_.duration();
+  return sample_time(cycle_time) + cycle_time >= end - kEndTolerance * std::max(1.0, end);
+}
+
 void MasterJob::mark_brake_phase() noexcept {
   has_brake_phase_ = true;
   brake_start_ = 0.0;
@@ -176,18 +193,18 @@ void MasterJob::set_levels(double user_velocity, double reduced_velocity,
 bool MasterJob::in_brake_phase(double cycle_time) const noexcept {
   if (!has_brake_phase_) return false;
   if (ended_) return true;
-  const double t = static_cast<double>(k_) * cycle_time;
+  const double t = sample_time(cycle_time);
   return t >= brake_start_ - kEndTolerance * std::max(1.0, brake_start_);
 }
 
 KinematicState MasterJob::advance(double cycle_time) noexcept {
-  if (ended_) {
+  if (ended_ && !passing()) {
     jerk_ = 0.0;
     state_ = chain_.state(profile_.final_state());
     return state_;
   }
   ++k_;
-  const double t = static_cast<double>(k_) * cycle_time;
+  const double t = sample_time(cycle_time);
   const double end = profile_.duration();
   const bool at_end = t >= end - kEndTolerance * std::max(1.0, end);
   if (kind_ == JobKind::kVelocity) {
@@ -202,7 +219,8 @@ KinematicState MasterJob::advance(double cycle_time) noexcept {
     // A rest for override 0 holds its end but does not end the job.
     ended_ = final_;
     jerk_ = 0.0;
-    state_ = chain_.state(profile_.final_state());
+    // A pass goes on at its velocity.
+    state_ = chain_.state(passing() ? profile_.at(t) : profile_.final_state());
     return state_;
   }
   jerk_ = chain_.velocity(profile_.jerk_at(t));

@@ -25,6 +25,12 @@
 // a = f·a), the same arithmetic its slave links did, so it goes on bit for bit as it would have
 // as a slave; the first replan (override, stop, new end position) drops the chain.
 //
+// A passing table (BufferMode blending, docs/behaviour.md "BufferMode") ends at its target with a
+// velocity. The buffered command takes over in the cycle whose sample passes that end: it is
+// planned from the table's end state and sampled from the time since that end (a time offset),
+// so the pass is exact. Past its end a pass left alone goes on at its velocity (the profile
+// extrapolates).
+//
 // Cycle functions only: noexcept, no allocation.
 #pragma once
 
@@ -67,6 +73,9 @@ bool reaches_level(const Profile& profile, double level) noexcept;
 // rounding), otherwise its peak — seed 000 §2.2's level "calculated and possibly reduced at the
 // start".
 double reduced_level(const Profile& profile, double velocity) noexcept;
+// The table never moves against `direction` (+1 / -1): |v| along it is >= 0 everywhere, up to
+// rounding (a blend's pass must not overshoot and return).
+bool moves_only_along(const Profile& profile, double direction) noexcept;
 // PlcToNc.Override as a factor 0 … 1 (exactly 1 at 1'000'000).
 inline double override_factor(uint32_t override_value) noexcept {
   return static_cast<double>(override_value) / static_cast<double>(plc::kOverrideFull);
@@ -132,6 +141,18 @@ class MasterJob {
               uint32_t override_value) noexcept;
   // The whole running table counts as brake phase (a Halt / Stop planned in one).
   void mark_brake_phase() noexcept;
+  // Right after start(): the table's t = 0 lies `offset` s after the last sample (offset <= 0:
+  // the table began between two cycles), so sample k is taken at k·T + offset.
+  void set_time_offset(double offset) noexcept { offset_ = offset; }
+  // The time of the last sample on the running table's clock (k·T + offset).
+  double sample_time(double cycle_time) const noexcept {
+    return static_cast<double>(k_) * cycle_time + offset_;
+  }
+  // A passing table whose end falls within the next cycle.
+  bool passes_in_next_cycle(double cycle_time) const noexcept;
+  // The running table's end state (a pass: the target at its pass velocity).
+  KinematicState table_end() const noexcept { return profile_.final_state(); }
+  double table_duration() const noexcept { return profile_.duration(); }
 
   // The set values of the next cycle. Call once per cycle while kind() != kNone.
   KinematicState advance(double cycle_time) noexcept;
@@ -146,6 +167,8 @@ class MasterJob {
     return kind_ == JobKind::kPosition || kind_ == JobKind::kVelocity;
   }
   uint16_t number() const noexcept { return number_; }
+  // A positioning whose table passes its target with a velocity (blending).
+  bool passing() const noexcept { return kind_ == JobKind::kPosition && profile_.holds_velocity(); }
   // Set-value generation has ended (positioning, halt, stop): the final state is output.
   bool generation_ended() const noexcept { return ended_; }
   // A velocity job holds its (non-zero) constant velocity.
@@ -188,6 +211,7 @@ class MasterJob {
   JobKind kind_ = JobKind::kNone;
   uint16_t number_ = 0;
   uint64_t k_ = 0;
+  double offset_ = 0.0;  // s; see set_time_offset()
   bool ended_ = false;
   bool reached_ = false;
   bool final_ = true;

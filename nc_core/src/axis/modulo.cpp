@@ -37,6 +37,23 @@ ErrorCode ServoAxis::start_modulo(const plc::Command& command) noexcept {
   if (const ErrorCode code = check_start(command, true, limits); code != ErrorCode::kNone) {
     return code;
   }
+  // Where the axis comes to rest on the shortest stop: from there on, no reversal is needed.
+  double from = set_.p;
+  if (set_.v != 0.0 || set_.a != 0.0) {
+    scratch_ = plan_stop(set_, limits.deceleration, limits.jerk);
+    if (!scratch_.ok()) return scratch_.error();
+    from = scratch_.final_state().p;
+  }
+  double end = 0.0;
+  if (const ErrorCode code = modulo_end(command, from, current_direction(), end);
+      code != ErrorCode::kNone) {
+    return code;
+  }
+  return start_to_target(command.number, end, limits);
+}
+
+ErrorCode ServoAxis::modulo_end(const plc::Command& command, double from, double moving,
+                                double& end) const noexcept {
   const double position = command.position;
   double direction = 0.0;
   switch (command.direction) {
@@ -47,7 +64,7 @@ ErrorCode ServoAxis::start_modulo(const plc::Command& command) noexcept {
       direction = -1.0;
       break;
     case plc::MC_Current_Direction:
-      direction = current_direction();
+      direction = moving;
       if (direction == 0.0) return ErrorCode::kDirectionInvalid;
       break;
     case plc::MC_Shortest_Way:  // decided below
@@ -59,13 +76,6 @@ ErrorCode ServoAxis::start_modulo(const plc::Command& command) noexcept {
   const double turns = std::floor(std::abs(position) / factor);
   if (!(turns <= kMaxModuloTurns)) return ErrorCode::kModuloTargetInvalid;
 
-  // Where the axis comes to rest on the shortest stop: from there on, no reversal is needed.
-  double from = set_.p;
-  if (set_.v != 0.0 || set_.a != 0.0) {
-    scratch_ = plan_stop(set_, limits.deceleration, limits.jerk);
-    if (!scratch_.ok()) return scratch_.error();
-    from = scratch_.final_state().p;
-  }
   const double tolerance = std::max(config_.encoder_increment, 1e-9 * factor);
   // The nearest ends congruent to P ahead of and behind `from` (P + F·m, m whole).
   const double ahead = position + factor * std::ceil((from - tolerance - position) / factor);
@@ -74,8 +84,8 @@ ErrorCode ServoAxis::start_modulo(const plc::Command& command) noexcept {
     direction =
         turns > 0.0 ? (position < 0.0 ? -1.0 : 1.0) : (ahead - from <= from - behind ? 1.0 : -1.0);
   }
-  const double end = (direction > 0.0 ? ahead : behind) + direction * turns * factor;
-  return start_to_target(command.number, end, limits);
+  end = (direction > 0.0 ? ahead : behind) + direction * turns * factor;
+  return ErrorCode::kNone;
 }
 
 }  // namespace nc::detail

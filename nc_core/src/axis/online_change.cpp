@@ -191,6 +191,7 @@ void ServoAxis::install_table(double target, bool final, double level) noexcept 
     target_ = target;
   }
   job_.set_target_velocity(final ? job_.direction() * level : 0.0);
+  if (final) plan_blend(level);  // a blending command waits: the new table passes its target
 }
 
 }  // namespace nc::detail

@@ -29,6 +29,7 @@ void ServoAxis::phase_commands(CouplingPort& port) noexcept {
   read_override();
   handle_commands(port);
   check_enables();
+  run_buffer(port);  // command_buffer.cpp: a waiting command takes over
   run_online_functions();
 }
 
@@ -270,8 +271,9 @@ void ServoAxis::finish_job() noexcept {
     case JobKind::kNone:
       break;
     case JobKind::kPosition:
-      // Done = set-value generation ended and the target window reached (or switched off).
-      if (job_.generation_ended() && monitors_.in_target_position()) {
+      // Done = set-value generation ended and the target window reached (or switched off). A
+      // pass (blending) is done when the waiting command takes over (command_buffer.cpp).
+      if (job_.generation_ended() && !job_.passing() && monitors_.in_target_position()) {
         channel_.answer_current(CommandState::kDone);
         job_.clear();
       }
@@ -308,6 +310,7 @@ void ServoAxis::raise_error(ErrorCode code) noexcept {
     }
     homing_.clear();
   }
+  drop_buffer(CommandState::kError, plc::to_id(code));  // a waiting command fails with the axis
   // The compensation fails with the axis; external generation is switched off (seed 000 §2.6).
   fold_superpositions(CommandState::kError, code);
   // A coupled slave's motion is its master's: it goes on following (group reactions: SPEC C7).

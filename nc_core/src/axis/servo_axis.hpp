@@ -14,6 +14,7 @@
 #include <span>
 
 #include "axis/axis_channel.hpp"
+#include "axis/command_buffer.hpp"
 #include "axis/compensation.hpp"
 #include "axis/drive.hpp"
 #include "axis/external_setpoint.hpp"
@@ -97,9 +98,13 @@ class ServoAxis {
   // --- commands.cpp ---
   void handle_commands(CouplingPort& port) noexcept;
   void handle(const plc::Command& command, CouplingPort& port) noexcept;
+  // Acts on a command now (BufferMode not looked at); the error code of a refusal.
+  ErrorCode handle_now(const plc::Command& command, CouplingPort& port) noexcept;
   ErrorCode start_position(const plc::Command& command) noexcept;
   ErrorCode start_velocity(const plc::Command& command) noexcept;
   ErrorCode start_halt_or_stop(const plc::Command& command) noexcept;
+  // The checks of a Halt / Stop's inputs and the axis (error, lock, dynamics, enable).
+  ErrorCode check_halt_or_stop(const plc::Command& command) const noexcept;
   // The checks of a positioning start once its absolute target is known (software limits,
   // enables, shorter than one increment), then start_positioning().
   ErrorCode start_to_target(uint16_t number, double target, const Limits& limits) noexcept;
@@ -190,6 +195,42 @@ class ServoAxis {
 
   // --- modulo.cpp (B1 modulo start, seed 000 §2.1) ---
   ErrorCode start_modulo(const plc::Command& command) noexcept;
+  // The end position of a modulo command for an axis coming to rest at `from` while moving in
+  // `moving` (+1 / -1, 0 at standstill: MC_Current_Direction is refused then).
+  ErrorCode modulo_end(const plc::Command& command, double from, double moving,
+                       double& end) const noexcept;
+
+  // --- command_buffer.cpp (BufferMode: one buffered command, blending; issue 14) ---
+  // A move or halt with a BufferMode other than MC_Aborting: checked, then started at once when
+  // the running job is already finished for it, else kept waiting (kBuffered) — a blending mode
+  // replans the running positioning to pass its target. A second one is refused (kBufferFull).
+  ErrorCode buffer_command(const plc::Command& command, CouplingPort& port) noexcept;
+  // Phase a, after the commands and enables: the waiting command takes over once the running
+  // job is finished for it; a pass with nothing to take over stops.
+  void run_buffer(CouplingPort& port) noexcept;
+  // The running job lets a buffered command start now: nothing runs, a positioning or halt has
+  // ended its set values, a velocity job holds its velocity.
+  bool ready_for_next() const noexcept;
+  // The running command ends (Done, or CommandAborted for a velocity job) and the waiting one
+  // starts from the set state (relative and modulo targets counted from the running target).
+  void take_next(CouplingPort& port) noexcept;
+  // The waiting command, if any, is answered `state` (an aborting command, a stop, an error).
+  void drop_buffer(plc::CommandState state, uint32_t code = 0) noexcept;
+  // With a blending command waiting behind a running positioning: its table replanned from the
+  // basic state to pass the target at the blend velocity the path allows (none on a reversal).
+  // `level`: the path velocity the running table has (override applied).
+  void plan_blend(double level) noexcept;
+  // Into scratch_: from `from` to `target` passed at `speed` along `direction`, not above the
+  // level `limits.velocity` until the last speed-up; false when it would move backwards.
+  bool plan_pass(const KinematicState& from, double target, double direction, double speed,
+                 const Limits& limits) noexcept;
+  // The direction (+1 / -1; 0: none or unknown) in which `next` moves on from the end
+  // `from` of the running positioning (which moves in `direction`), and its end position (NaN
+  // for a velocity move or a halt).
+  double next_direction(const plc::Command& next, double from, double direction,
+                        double& end) const noexcept;
+  // A pass table ended with nothing to take over: the axis stops from where it is.
+  void stop_pass() noexcept;
 
   // --- superposition.cpp (B7 position compensation, B8 external setpoints: their commands, and
   // the stack's rules where the axis's basic state must follow) ---
@@ -213,6 +254,7 @@ class ServoAxis {
 
   MasterJob job_{};
   HomingJob homing_{};
+  CommandBuffer buffer_{};
   PositionController controller_{};
   Drive drive_{};
   Monitors monitors_{};

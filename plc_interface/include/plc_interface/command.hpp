@@ -79,13 +79,15 @@ enum class CommandType : uint16_t {
 
 // Lifecycle of one command number, as the NC reports it in the answer table.
 enum class CommandState : uint16_t {
-  kFree = 0,     // slot unused / number unknown
-  kPosted = 1,   // in the mailbox, not yet seen by the NC
-  kActive = 2,   // accepted; the job runs (the axis executes this number)
-  kReached = 3,  // the job's goal is reached but it goes on (InVelocity, InGear, Enabled)
-  kDone = 4,     // the job has ended successfully (target reached, stopped, reset done)
-  kAborted = 5,  // a later command took over the axis before this job ended
-  kError = 6,    // refused at acceptance, or failed while running: see error_code
+  kFree = 0,      // slot unused / number unknown
+  kPosted = 1,    // in the mailbox, not yet seen by the NC
+  kActive = 2,    // accepted; the job runs (the axis executes this number)
+  kReached = 3,   // the job's goal is reached but it goes on (InVelocity, InGear, Enabled)
+  kDone = 4,      // the job has ended successfully (target reached, stopped, reset done)
+  kAborted = 5,   // a later command took over the axis before this job ended
+  kError = 6,     // refused at acceptance, or failed while running: see error_code
+  kBuffered = 7,  // accepted into the axis's one buffer slot (BufferMode other than MC_Aborting):
+                  // waits behind the running command, then kActive when it takes over
 };
 
 // One axis function with its parameters. Which fields a type uses is listed at CommandType;

@@ -69,9 +69,9 @@ enum class ErrorCode : uint32_t {
   kAxisNotReady = 0x4B09,
 
   // --- ncsdk's own numbers ---
-  kPositionNotFinite = 0x4F01,   // target, distance or start position NaN or infinite
-  kParameterNotFinite = 0x4F02,  // another parameter NaN or infinite
-  kBufferModeNotSupported = 0x4F03,
+  kPositionNotFinite = 0x4F01,       // target, distance or start position NaN or infinite
+  kParameterNotFinite = 0x4F02,      // another parameter NaN or infinite
+  kBufferModeNotSupported = 0x4F03,  // BufferMode not one of MC_BufferMode's values
   kMailboxFull = 0x4F04,
   kUnknownCommand = 0x4F05,
   kAxisInErrorState = 0x4F06,  // motion refused until MC_Reset
@@ -89,6 +89,7 @@ enum class ErrorCode : uint32_t {
   kHomingModeNotSupported = 0x4F21,   // MC_AbsSwitch, MC_LimitSwitch, MC_RefPulse
   kHomingSyncPulseNotFound = 0x4F22,  // cam edge or sync pulse not within the search distance
   kHomingAxisMoving = 0x4F23,         // MC_Direct while the axis has a job or moves
+  kBufferFull = 0x4F60,               // a buffered command already waits on this axis
 
   // --- CNC HLI coupling IDs (decimal) ---
   kHliFractOnReferencedAxis = 70195,

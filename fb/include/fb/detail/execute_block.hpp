@@ -8,6 +8,7 @@
 //  - a falling Execute never aborts the command;
 //  - Busy, Done, Error and CommandAborted are mutually exclusive, and so are Active, Done, Error
 //    and CommandAborted; Active only while the axis executes this block's command number;
+//  - a command the NC keeps in its buffer (kBuffered, BufferMode) is Busy but not Active;
 //  - a result (Done, Error, CommandAborted) stays while Execute stays high; a result reached
 //    after Execute fell is shown for exactly one call; then the outputs reset.
 // One documented exception, opted into by MC_GearIn (issue 9): with kRetriggerWhileReached a
@@ -94,9 +95,10 @@ struct MotionInputs {
   int32_t buffer_mode = 0;
 };
 
-// Builds the Start of a move command: only MC_Aborting is supported (every other buffer mode is
-// refused locally with kBufferModeNotSupported, nothing posted). Motion parameters are passed
-// as they are: the NC validates them and answers with its own code.
+// Builds the Start of a move or halt command with its BufferMode (a value outside MC_BufferMode is
+// refused locally with kBufferModeNotSupported, nothing posted). Motion parameters are passed as
+// they are: the NC validates them and answers with its own code. A buffered command is answered
+// kBuffered while it waits (the block is Busy, not Active) and kActive when it takes over.
 Start motion_start(plc::CommandType type, const MotionInputs& inputs) noexcept;
 
 }  // namespace fb::detail

@@ -1,0 +1,288 @@
+// BufferMode (issue 14; docs/behaviour.md "BufferMode"): the axis's one buffered command, when it
+// takes over, and the blend — the running positioning replanned to pass its target with the
+// blend velocity, so that the next command starts there without stopping.
+//
+// Blend velocity: the mode's choice of the two commands' velocities (times the override), then
+// limited to what the path allows: 0 when the next command reverses (or is a halt), not above
+// the speed from which the next positioning can still stop at its own target, and within the
+// speeds the running table can reach at its target without moving backwards (found by
+// bisection between the wanted speed and the speed the axis has now).
+#include "axis/command_buffer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "axis/servo_axis.hpp"
+
+namespace nc::detail {
+
+namespace {
+
+using plc::CommandState;
+using plc::CommandType;
+
+// Bisection steps for a speed limit: 2^-40 of the wanted speed is far below one cycle's change.
+constexpr int kBisectionSteps = 40;
+
+double sign_of(double x) noexcept {
+  return x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0);
+}
+
+// The distance the shortest stop from `speed` (a = 0) takes at `deceleration` and `jerk`.
+double stop_distance(double speed, double deceleration, double jerk) noexcept {
+  const Profile stop = plan_stop(KinematicState{0.0, speed, 0.0}, deceleration, jerk);
+  return stop.ok() ? stop.final_state().p : std::numeric_limits<double>::infinity();
+}
+
+// Appends `from`'s segments to `to` with their exact end values; false when `to` is full.
+bool append_all(Profile& to, const Profile& from) noexcept {
+  for (std::size_t i = 0; i < from.segment_count(); ++i) {
+    const Segment& s = from.segment(i);
+    const KinematicState end =
+        i + 1 < from.segment_count()
+            ? KinematicState{0.0, from.segment(i + 1).v, from.segment(i + 1).a}
+            : from.final_state();
+    if (!to.append(s.duration, s.j, end.a, end.v)) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+double blend_velocity(int32_t mode, double previous, double next) noexcept {
+  switch (mode) {
+    case plc::MC_BlendingLow:
+      return std::min(previous, next);
+    case plc::MC_BlendingPrevious:
+      return previous;
+    case plc::MC_BlendingNext:
+      return next;
+    case plc::MC_BlendingHigh:
+      return std::max(previous, next);
+    default:
+      return 0.0;
+  }
+}
+
+ErrorCode ServoAxis::buffer_command(const plc::Command& command, CouplingPort& port) noexcept {
+  // The command's own checks now (a refusal leaves the waiting one and the running job as
+  // they are); what depends on where it starts (targets, enables) when it takes over.
+  if (command.type == CommandType::kHalt) {
+    if (const ErrorCode code = check_halt_or_stop(command); code != ErrorCode::kNone) return code;
+  } else {
+    Limits limits;
+    const bool has_position = command.type != CommandType::kMoveVelocity;
+    if (const ErrorCode code = check_start(command, has_position, limits);
+        code != ErrorCode::kNone) {
+      return code;
+    }
+  }
+  if (buffer_.waiting) return ErrorCode::kBufferFull;
+  buffer_.command = command;
+  buffer_.waiting = true;
+  channel_.answer(command.number, CommandState::kBuffered);
+  if (ready_for_next()) {
+    take_next(port);
+  } else if (blending_mode(command.buffer_mode)) {
+    plan_blend(std::abs(job_.target_velocity()));
+  }
+  return ErrorCode::kNone;
+}
+
+bool ServoAxis::ready_for_next() const noexcept {
+  switch (job_.kind()) {
+    case JobKind::kNone:
+      return true;
+    case JobKind::kPosition:
+      return job_.final_table() &&
+             (job_.generation_ended() || job_.passes_in_next_cycle(cycle_time_));
+    case JobKind::kHalt:
+      return job_.generation_ended();
+    case JobKind::kVelocity:
+      return job_.velocity_reached();
+    case JobKind::kStop:
+    case JobKind::kEmergencyStop:
+      return false;  // a stop locks, an error ramp drops the buffer: never reached
+  }
+  return false;
+}
+
+void ServoAxis::run_buffer(CouplingPort& port) noexcept {
+  if (buffer_.waiting && ready_for_next()) take_next(port);
+  // A pass whose next command was refused when taking over (or dropped) must not run away.
+  if (!buffer_.waiting && job_.passing() && job_.generation_ended()) stop_pass();
+}
+
+void ServoAxis::take_next(CouplingPort& port) noexcept {
+  plc::Command next = buffer_.command;
+  buffer_.waiting = false;
+  next.buffer_mode = plc::MC_Aborting;
+  // Relative and modulo targets count from the running positioning's target (where a buffered
+  // command starts), not from where the set values are when it takes over.
+  const bool after_positioning = job_.kind() == JobKind::kPosition;
+  const double base = after_positioning ? job_.target() : set_.p;
+  ErrorCode code = ErrorCode::kNone;
+  if (next.type == CommandType::kMoveRelative) {
+    next.type = CommandType::kMoveAbsolute;
+    next.position = base + next.position;
+  } else if (next.type == CommandType::kMoveModulo) {
+    double end = 0.0;
+    code = modulo_end(next, base, after_positioning ? job_.direction() : current_direction(), end);
+    next.type = CommandType::kMoveAbsolute;
+    next.position = end;
+  }
+  // The running command is done here (a velocity job is aborted by the take-over itself).
+  if (job_.kind() == JobKind::kPosition || job_.kind() == JobKind::kHalt) {
+    if (channel_.runs(job_.number())) channel_.answer_current(CommandState::kDone);
+  }
+  if (code == ErrorCode::kNone) {
+    const KinematicState basic = basic_state();
+    const bool exact = job_.passes_in_next_cycle(cycle_time_) && basic.p == set_.p &&
+                       basic.v == set_.v && basic.a == set_.a;
+    if (exact) {
+      // The pass ends within this cycle: the next command starts from the pass's end state at
+      // its end time, so its first sample lies between 0 and T after the target.
+      const KinematicState now = set_;
+      const double offset = job_.sample_time(cycle_time_) - job_.table_duration();
+      set_ = job_.table_end();
+      code = handle_now(next, port);
+      set_ = now;
+      if (code == ErrorCode::kNone && job_.number() == next.number) job_.set_time_offset(offset);
+    } else {
+      code = handle_now(next, port);
+    }
+  }
+  if (code != ErrorCode::kNone) {
+    channel_.answer(next.number, CommandState::kError, plc::to_id(code));
+    if (job_.passing()) stop_pass();
+  }
+}
+
+void ServoAxis::drop_buffer(plc::CommandState state, uint32_t code) noexcept {
+  if (!buffer_.waiting) return;
+  buffer_.waiting = false;
+  channel_.answer(buffer_.command.number, state, code);
+}
+
+void ServoAxis::stop_pass() noexcept {
+  scratch_ = plan_stop(set_, job_.limits().deceleration, job_.limits().jerk);
+  if (!scratch_.ok()) return;
+  job_.replan(scratch_, true);
+  job_.set_target(scratch_.final_state().p);
+  job_.set_target_velocity(0.0);
+  target_ = scratch_.final_state().p;
+  monitors_.reset_windows();
+}
+
+double ServoAxis::next_direction(const plc::Command& next, double from, double direction,
+                                 double& end) const noexcept {
+  end = std::numeric_limits<double>::quiet_NaN();
+  switch (next.type) {
+    case CommandType::kMoveAbsolute:
+      end = next.position;
+      break;
+    case CommandType::kMoveRelative:
+      end = from + next.position;
+      break;
+    case CommandType::kMoveModulo:
+      if (modulo_end(next, from, direction, end) != ErrorCode::kNone) return 0.0;
+      break;
+    case CommandType::kMoveVelocity:
+      if (next.direction == plc::MC_Current_Direction) return direction;
+      if (next.direction == plc::MC_Positive_Direction) return 1.0;
+      if (next.direction == -1 || next.direction == plc::MC_Negative_Direction) return -1.0;
+      return 0.0;
+    default:
+      return 0.0;  // a halt ends the motion: nothing to blend into
+  }
+  return sign_of(end - from);
+}
+
+void ServoAxis::plan_blend(double level) noexcept {
+  if (!buffer_.waiting || !blending_mode(buffer_.command.buffer_mode)) return;
+  if (job_.kind() != JobKind::kPosition || !job_.final_table() || job_.generation_ended()) return;
+  if (!(level > 0.0)) return;
+  const plc::Command& next = buffer_.command;
+  const KinematicState from = basic_state();
+  // The job's end, moved by what ended superpositions left (as apply_override()).
+  const double target = job_.target() + (from.p - job_.state().p);
+  const double direction = job_.direction();
+  double end = 0.0;
+  if (next_direction(next, target, direction, end) != direction) return;  // reversal: at rest
+
+  const double factor = level / job_.user_velocity();  // the override in force
+  double wanted =
+      std::min(blend_velocity(next.buffer_mode, job_.user_velocity(), next.velocity) * factor,
+               config_.max_velocity);
+  if (std::isfinite(end)) {
+    // Not faster than the next positioning can still stop from before its own end.
+    const double room = std::abs(end - target);
+    const double dec = next.deceleration > 0.0 ? next.deceleration : config_.deceleration;
+    const double jerk = next.jerk > 0.0 ? next.jerk : config_.jerk;
+    if (stop_distance(wanted, dec, jerk) > room) {
+      double fits = 0.0;
+      double too_fast = wanted;
+      for (int i = 0; i < kBisectionSteps; ++i) {
+        const double mid = 0.5 * (fits + too_fast);
+        (stop_distance(mid, dec, jerk) <= room ? fits : too_fast) = mid;
+      }
+      wanted = fits;
+    }
+  }
+  if (!(wanted > 0.0)) return;
+
+  Limits limits = job_.limits();
+  limits.velocity = level;
+  double speed = wanted;
+  if (!plan_pass(from, target, direction, speed, limits)) {
+    // Between the speed the axis has now (reachable unless it is already too late to stop) and
+    // the wanted one lies the bound of what the rest of the path allows.
+    double good = std::clamp(direction * from.v, 0.0, wanted);
+    if (!(good > 0.0) || !plan_pass(from, target, direction, good, limits)) return;
+    double bad = wanted;
+    for (int i = 0; i < kBisectionSteps; ++i) {
+      const double mid = 0.5 * (good + bad);
+      (plan_pass(from, target, direction, mid, limits) ? good : bad) = mid;
+    }
+    speed = good;
+    if (!plan_pass(from, target, direction, speed, limits)) return;
+  }
+  job_.replan(scratch_, true);
+  stack_.rebase();  // planned from basic_state(): the held offset is in the table now
+  job_.set_target(target);
+  job_.set_target_velocity(direction * level);
+  target_ = target;
+}
+
+bool ServoAxis::plan_pass(const KinematicState& from, double target, double direction, double speed,
+                          const Limits& limits) noexcept {
+  if (speed <= limits.velocity) {
+    scratch_ = plan_position(from, target, direction * speed, limits);
+    return scratch_.ok() && moves_only_along(scratch_, direction);
+  }
+  // Faster than the running level: hold the level, then speed up so that the speed is reached
+  // exactly at the target (the speed-up is the last part of the running command).
+  Limits up = limits;
+  up.velocity = speed;
+  const Profile rise =
+      plan_velocity(KinematicState{0.0, direction * limits.velocity, 0.0}, direction * speed, up);
+  if (rise.ok()) {
+    const Profile lead =
+        plan_position(from, target - rise.final_state().p, direction * limits.velocity, limits);
+    if (lead.ok() && moves_only_along(lead, direction)) {
+      scratch_.reset(from);
+      if (append_all(scratch_, lead) && append_all(scratch_, rise)) {
+        const KinematicState exact{target, direction * speed, 0.0};
+        scratch_.close(&exact, true);
+        scratch_.anchor_to_end(lead.segment_count());
+        return true;
+      }
+    }
+  }
+  // Too short to hold the level first: the quickest way to the speed at the target.
+  scratch_ = plan_position(from, target, direction * speed, up);
+  return scratch_.ok() && moves_only_along(scratch_, direction);
+}
+
+}  // namespace nc::detail

@@ -1,0 +1,44 @@
+// The one buffered command of an axis (Tc2_MC2 BufferMode, issue 14; docs/behaviour.md
+// "BufferMode"): a MoveAbsolute / MoveRelative / MoveModulo / MoveVelocity / Halt posted with a
+// BufferMode other than MC_Aborting waits here, answered kBuffered, until the running command is
+// done (MC_Buffered) or has passed its target (the four blending modes); then it takes over and
+// is answered kActive. A second one while one waits is refused (kBufferFull); an aborting
+// command, a stop or an axis error drops the waiting one.
+//
+// Plain data plus pure helpers; the axis's use of it is in command_buffer.cpp (ServoAxis).
+// Cycle functions only: noexcept, no allocation.
+#pragma once
+
+#include <cstdint>
+
+#include "plc_interface/command.hpp"
+
+namespace nc::detail {
+
+struct CommandBuffer {
+  plc::Command command{};
+  bool waiting = false;
+};
+
+// A BufferMode value the NC knows (MC_Aborting … MC_BlendingHigh).
+constexpr bool known_buffer_mode(int32_t mode) noexcept {
+  return mode >= plc::MC_Aborting && mode <= plc::MC_BlendingHigh;
+}
+
+constexpr bool blending_mode(int32_t mode) noexcept {
+  return mode >= plc::MC_BlendingLow && mode <= plc::MC_BlendingHigh;
+}
+
+// The commands that take a BufferMode (the others ignore it).
+constexpr bool bufferable(plc::CommandType type) noexcept {
+  return type == plc::CommandType::kMoveAbsolute || type == plc::CommandType::kMoveRelative ||
+         type == plc::CommandType::kMoveModulo || type == plc::CommandType::kMoveVelocity ||
+         type == plc::CommandType::kHalt;
+}
+
+// The velocity a blending mode asks for at the first command's target, from the two commands'
+// velocities (Low: the lower, Previous: the first's, Next: the second's, High: the higher);
+// 0 for MC_Aborting and MC_Buffered.
+double blend_velocity(int32_t mode, double previous, double next) noexcept;
+
+}  // namespace nc::detail
