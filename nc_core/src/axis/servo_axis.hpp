@@ -28,6 +28,8 @@
 #include "nc_core/coupling_graph.hpp"
 #include "nc_core/profile.hpp"
 #include "plc_interface/axis_ref.hpp"
+#include "plc_interface/two_speed.hpp"
+#include "two_speed/two_speed_axis.hpp"
 
 namespace nc::detail {
 
@@ -60,6 +62,10 @@ class ServoAxis {
   plc::AXIS_REF& ref() noexcept { return channel_.ref(); }
   const plc::AXIS_REF& ref() const noexcept { return channel_.ref(); }
   const AxisConfig& config() const noexcept { return config_; }
+  // Kind kTwoSpeed: the 12-byte drive image of this cycle; nullptr for every other kind.
+  const plc::NCTOIO_DRIVE_TWO_SPEED* two_speed_output() const noexcept {
+    return two_speed_ ? &two_speed_->output() : nullptr;
+  }
 
   // The phases of one NC cycle (steps a … f of docs/architecture.md "One tick"); the kernel
   // calls each for every axis before the next. The snapshot is what other axes may read.
@@ -220,6 +226,9 @@ class ServoAxis {
   bool locked_ = false;  // MC_Stop: motion commands refused until kStopRelease
   bool has_been_stopped_ = false;
   bool error_event_ = false;  // an error was raised in this cycle
+
+  // Kind kTwoSpeed: the phases run this instead of the servo path (AxisKind dispatch).
+  std::unique_ptr<TwoSpeedAxis> two_speed_;
 };
 
 }  // namespace nc::detail
