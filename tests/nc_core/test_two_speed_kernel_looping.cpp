@@ -43,13 +43,13 @@ TEST_CASE("looping 30 mm: 0 → 1000 passes 1000, reverses short of 1030 and com
           "[two_speed][kernel][looping]") {
   tsk::Rig rig(looping_axis());
   REQUIRE(rig.position_to(1000.0));
-  CHECK(tsk::images_consistent(rig.trace));
+  CHECK(ts::images_consistent(rig.trace));
   // The first leg ends at the reversal point 1030: creep off once the encoder passed 1025.
   const double top = highest(rig.trace);
   CHECK(top > 1025.0);
   CHECK(top < 1030.0);
   CHECK(last_travel_direction(rig.trace) == -1.0);
-  CHECK(tsk::state_sequence(rig.trace) == std::vector<uint32_t>{21, 22, 23, 24, 23, 24, 20});
+  CHECK(ts::state_sequence(rig.trace) == std::vector<uint32_t>{21, 22, 23, 24, 23, 24, 20});
   rig.cycles(300);
   CHECK(rig.actual() > 1000.0);  // approached from above
   CHECK(rig.actual() - 1000.0 <= 6.0);
@@ -61,9 +61,9 @@ TEST_CASE("looping 30 mm: 2000 → 1000 needs no loop and ends on the same side"
   REQUIRE(rig.position_to(2000.0));
   rig.cycles(300);
   REQUIRE(rig.position_to(1000.0));
-  CHECK(tsk::images_consistent(rig.trace));
+  CHECK(ts::images_consistent(rig.trace));
   CHECK(last_travel_direction(rig.trace) == -1.0);
-  CHECK(tsk::state_sequence(rig.trace) == std::vector<uint32_t>{21, 22, 23, 24, 20});
+  CHECK(ts::state_sequence(rig.trace) == std::vector<uint32_t>{21, 22, 23, 24, 20});
   CHECK(highest(rig.trace) <= rig.trace.front().read);  // never above where it started
   rig.cycles(300);
   CHECK(rig.actual() > 1000.0);

@@ -41,46 +41,46 @@ void check_positioning(const Direction& d) {
   CHECK(rig.state() == State::kInactive);  // enabled, never started: 0
   REQUIRE(rig.position_to(d.target));
   const std::vector<Sample>& trace = rig.trace;
-  CHECK(tsk::images_consistent(trace));
+  CHECK(ts::images_consistent(trace));
 
   // T0: the start's cycle releases the brake; nothing travels yet; nAxisState 21.
   CHECK_FALSE(trace[0].brake());
   CHECK(trace[0].bit(C::bBreakInv));
   CHECK_FALSE(trace[0].travel());
-  CHECK(trace[0].state() == State::kMainTravel);
+  CHECK(trace[0].state == State::kMainTravel);
 
-  const std::size_t rapid_on = tsk::first(trace, [&](const Sample& s) { return s.bit(d.rapid); });
+  const std::size_t rapid_on = ts::first(trace, [&](const Sample& s) { return s.bit(d.rapid); });
   REQUIRE(rapid_on != ts::kNotFound);
   CHECK(rapid_on == 50);  // T0 + 0.05 s at 1 ms
 
-  const std::size_t rapid_off = tsk::first(
+  const std::size_t rapid_off = ts::first(
       trace, [&](const Sample& s) { return !s.bit(d.rapid); }, rapid_on);
   REQUIRE(rapid_off != ts::kNotFound);
   CHECK(passed(trace[rapid_off].read, d.creep_point, d.target));
   CHECK_FALSE(passed(trace[rapid_off - 1].read, d.creep_point, d.target));
-  CHECK(trace[rapid_off].state() == State::kHighToLowDelay);
-  CHECK(trace[rapid_off - 1].state() == State::kMainTravel);
+  CHECK(trace[rapid_off].state == State::kHighToLowDelay);
+  CHECK(trace[rapid_off - 1].state == State::kMainTravel);
 
-  const std::size_t creep_on = tsk::first(trace, [&](const Sample& s) { return s.bit(d.creep); });
+  const std::size_t creep_on = ts::first(trace, [&](const Sample& s) { return s.bit(d.creep); });
   REQUIRE(creep_on != ts::kNotFound);
   CHECK(creep_on == rapid_off + 20);  // rapid-to-creep delay 0.02 s
-  CHECK(trace[creep_on].state() == State::kLowSpeedTravel);
-  CHECK(trace[creep_on - 1].state() == State::kHighToLowDelay);
+  CHECK(trace[creep_on].state == State::kLowSpeedTravel);
+  CHECK(trace[creep_on - 1].state == State::kHighToLowDelay);
 
-  const std::size_t creep_off = tsk::first(
+  const std::size_t creep_off = ts::first(
       trace, [&](const Sample& s) { return !s.bit(d.creep); }, creep_on);
   REQUIRE(creep_off != ts::kNotFound);
   CHECK(passed(trace[creep_off].read, d.braking_point, d.target));
   CHECK_FALSE(passed(trace[creep_off - 1].read, d.braking_point, d.target));
-  CHECK(trace[creep_off].state() == State::kBrakeIncidenceDelay);
+  CHECK(trace[creep_off].state == State::kBrakeIncidenceDelay);
   CHECK_FALSE(trace[creep_off].brake());
 
-  const std::size_t brake_on = tsk::first(
+  const std::size_t brake_on = ts::first(
       trace, [](const Sample& s) { return s.brake(); }, creep_off);
   REQUIRE(brake_on != ts::kNotFound);
   CHECK(brake_on == creep_off + d.brake_incidence_cycles);
-  CHECK(trace[brake_on].state() == State::kStopped);
-  CHECK(tsk::state_sequence(trace) == std::vector<uint32_t>{21, 22, 23, 24, 20});
+  CHECK(trace[brake_on].state == State::kStopped);
+  CHECK(ts::state_sequence(trace) == std::vector<uint32_t>{21, 22, 23, 24, 20});
   // Done is reported in the brake-on cycle; the block shows it at its next call.
   CHECK(rig.move.Done);
   CHECK(trace.size() == brake_on + 2);
@@ -107,7 +107,7 @@ void check_positioning(const Direction& d) {
     INFO("cycle " << i);
     REQUIRE(s.image == trace[i].image);
     REQUIRE(s.actual == trace[i].read);
-    REQUIRE(static_cast<uint32_t>(s.state) == trace[i].axis_state);
+    REQUIRE(s.state == trace[i].state);
   }
 }
 

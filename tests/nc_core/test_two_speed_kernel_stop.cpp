@@ -29,28 +29,28 @@ std::size_t start_and_reach_500(tsk::Rig& rig) {
 
 void check_stop_sequence(const tsk::Rig& rig, std::size_t called, double stop_position) {
   const std::vector<Sample>& t = rig.trace;
-  CHECK(tsk::images_consistent(t));
+  CHECK(ts::images_consistent(t));
   // The stop's own cycle: rapid off, 22.
   CHECK_FALSE(t[called].bit(C::bPlusHigh));
-  CHECK(t[called].state() == State::kHighToLowDelay);
+  CHECK(t[called].state == State::kHighToLowDelay);
   for (std::size_t i = called; i < t.size(); ++i) {
     INFO("cycle " << i);
     REQUIRE_FALSE(t[i].bit(C::bPlusHigh));
     REQUIRE_FALSE(t[i].bit(C::bMinusHigh));
   }
-  const std::size_t creep_on = tsk::first(
+  const std::size_t creep_on = ts::first(
       t, [](const Sample& s) { return s.bit(C::bPlusLow); }, called);
   REQUIRE(creep_on == called + 20);  // rapid-to-creep delay
-  const std::size_t creep_off = tsk::first(
+  const std::size_t creep_off = ts::first(
       t, [](const Sample& s) { return !s.bit(C::bPlusLow); }, creep_on);
   REQUIRE(creep_off != ts::kNotFound);
   CHECK(t[creep_off].read >= stop_position + 20.0);
   CHECK(t[creep_off - 1].read < stop_position + 20.0);
-  CHECK(t[creep_off].state() == State::kBrakeIncidenceDelay);
-  const std::size_t brake_on = tsk::first(
+  CHECK(t[creep_off].state == State::kBrakeIncidenceDelay);
+  const std::size_t brake_on = ts::first(
       t, [](const Sample& s) { return s.brake(); }, creep_off);
   REQUIRE(brake_on == creep_off + 30);  // brake incidence delay +, 0.03 s
-  CHECK(t[brake_on].state() == State::kStopped);
+  CHECK(t[brake_on].state == State::kStopped);
 }
 
 }  // namespace

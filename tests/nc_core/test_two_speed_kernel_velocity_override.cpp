@@ -29,7 +29,7 @@ TEST_CASE("start velocity 40 creeps only; 50.0 too, 50.001 is rapid", "[two_spee
     REQUIRE(rig.position_to(200.0, v));
     CHECK_FALSE(any_rapid(rig.trace));
     CHECK(rig.trace[50].bit(C::bPlusLow));  // creep on after the brake release delay
-    CHECK(tsk::state_sequence(rig.trace) == std::vector<uint32_t>{21, 23, 24, 20});
+    CHECK(ts::state_sequence(rig.trace) == std::vector<uint32_t>{21, 23, 24, 20});
   }
   tsk::Rig rig;
   REQUIRE(rig.position_to(200.0, 50.001));
@@ -48,7 +48,7 @@ TEST_CASE("override 40 % during rapid: rapid off, the delay, creep", "[two_speed
   rig.cycle();
   CHECK_FALSE(rig.last.bit(C::bPlusHigh));
   CHECK_FALSE(rig.last.travel());
-  CHECK(rig.last.state() == State::kMainTravel);  // still main travel, through the delay
+  CHECK(rig.last.state == State::kMainTravel);  // still main travel, through the delay
   rig.cycles(19);
   CHECK_FALSE(rig.last.travel());
   rig.cycle();
@@ -76,7 +76,7 @@ TEST_CASE("override 0 in main travel: stationary, brake released, 21; resumes at
   rig.cycles(300);  // the drive runs down
   CHECK_FALSE(rig.last.travel());
   CHECK_FALSE(rig.last.brake());
-  CHECK(rig.last.state() == State::kMainTravel);
+  CHECK(rig.last.state == State::kMainTravel);
   CHECK(rig.axis.NcToPlc.ActVelo == 0.0);
   const double held = rig.actual();
   CHECK(held < 900.0);
@@ -96,8 +96,8 @@ TEST_CASE("an override change in a braking phase changes nothing", "[two_speed][
   // The same positioning, the override falling to 0 in 22 and rising to 40 % in 23.
   tsk::Rig rig;
   rig.each = [](tsk::Rig& r) {
-    if (r.last.state() == State::kHighToLowDelay) r.power.Override = 0.0;
-    if (r.last.state() == State::kLowSpeedTravel) r.power.Override = 40.0;
+    if (r.last.state == State::kHighToLowDelay) r.power.Override = 0.0;
+    if (r.last.state == State::kLowSpeedTravel) r.power.Override = 40.0;
   };
   REQUIRE(rig.position_to(1000.0));
   CHECK(rig.power.Override == 40.0);  // both changes were made
@@ -106,6 +106,6 @@ TEST_CASE("an override change in a braking phase changes nothing", "[two_speed][
     INFO("cycle " << i);
     REQUIRE(rig.trace[i].image == reference.trace[i].image);
     REQUIRE(rig.trace[i].read == reference.trace[i].read);
-    REQUIRE(rig.trace[i].axis_state == reference.trace[i].axis_state);
+    REQUIRE(rig.trace[i].state == reference.trace[i].state);
   }
 }

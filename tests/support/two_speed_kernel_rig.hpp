@@ -6,7 +6,6 @@
 // region. The axis is issue 12's (two_speed_loop.hpp: ts::issue_axis).
 #pragma once
 
-#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -27,14 +26,13 @@ struct Sample {
   double read = 0.0;    // the encoder value the NC read at the start of this cycle
   double actual = 0.0;  // NcToPlc.ActPos after it
   plc::NCTOIO_DRIVE_TWO_SPEED image{};
-  uint32_t axis_state = 0;  // NcToPlc.AxisState = nAxisState
+  State state = State::kInactive;  // NcToPlc.AxisState = nAxisState
   uint32_t state_word = 0;
   uint32_t error = 0;
 
   bool bit(C b) const { return plc::bit_set(image.nControlByte, b); }
   bool travel() const { return (image.nControlByte & 0x0F) != 0; }
   bool brake() const { return bit(C::bBreak); }
-  State state() const { return static_cast<State>(axis_state); }
   bool operator==(const Sample&) const = default;
 };
 
@@ -81,7 +79,7 @@ struct Rig {
     kernel.cycle();
     s.actual = axis.NcToPlc.ActPos;
     s.image = image();
-    s.axis_state = axis.NcToPlc.AxisState;
+    s.state = static_cast<State>(axis.NcToPlc.AxisState);
     s.state_word = axis.NcToPlc.StateDWord;
     s.error = axis.NcToPlc.ErrorCode;
     last = s;
@@ -116,31 +114,7 @@ struct Rig {
   Sample last;
 };
 
-// Index of the first sample at or after `from` for which `pred` holds; ts::kNotFound when none.
-template <class Pred>
-std::size_t first(const std::vector<Sample>& trace, Pred pred, std::size_t from = 0) {
-  for (std::size_t i = from; i < trace.size(); ++i) {
-    if (pred(trace[i])) return i;
-  }
-  return ts::kNotFound;
-}
-
-inline std::vector<uint32_t> state_sequence(const std::vector<Sample>& trace) {
-  std::vector<uint32_t> out;
-  for (const Sample& s : trace) {
-    if (out.empty() || out.back() != s.axis_state) out.push_back(s.axis_state);
-  }
-  return out;
-}
-
-inline bool images_consistent(const std::vector<Sample>& trace) {
-  for (const Sample& s : trace) {
-    if (!plc::control_bytes_consistent(s.image) || s.image.nReserved != 0 ||
-        s.image.nOutData1 != 0 || s.image.nOutData2 != 0) {
-      return false;
-    }
-  }
-  return true;
-}
+// ts::first, ts::state_sequence and ts::images_consistent (two_speed_loop.hpp) read a trace of
+// these samples too.
 
 }  // namespace tsk
