@@ -5,7 +5,8 @@
 // phase_set_values, phase_drive, phase_monitors, phase_publish. What the PLC side sees lives in
 // the AxisChannel; a start is planned into the kernel's one scratch profile. The constructor is
 // set-up (allocates the dead-time line); everything else runs in the cycle: noexcept, no
-// allocation.
+// allocation. An axis of kind kTwoSpeed is a slot of the same type whose phases hand over to its
+// TwoSpeedAxis (two_speed/two_speed_axis.hpp) on the same AxisChannel.
 #pragma once
 
 #include <cstddef>
