@@ -204,9 +204,6 @@ void validate(const AxisConfig& config) {
   }
   if (config.kind == AxisKind::kTwoSpeed) {
     validate_two_speed(config);
-    // Until the kernel drives a two-speed axis (TwoSpeedAxis on the phased kernel), refusing it
-    // here keeps add_axis/from_json from running it as a servo axis. Remove with the integration.
-    throw ConfigError("/kind", "two-speed axes are not yet driven by the kernel", "\"two_speed\"");
   }
 }
 

@@ -82,6 +82,13 @@ plc::AXIS_REF& Kernel::axis(std::size_t index) noexcept {
 const AxisConfig& Kernel::config(std::string_view name) const {
   return find(name).config();
 }
+const plc::NCTOIO_DRIVE_TWO_SPEED& Kernel::two_speed_output(std::string_view name) const {
+  const plc::NCTOIO_DRIVE_TWO_SPEED* image = find(name).two_speed_output();
+  if (image == nullptr) {
+    throw ConfigError("/axes", "has this axis, but not of kind two_speed", std::string(name));
+  }
+  return *image;
+}
 
 std::span<plc::hli::HLI_AX* const> Kernel::gpAx() const noexcept {
   return hli_->gpAx();

@@ -325,10 +325,36 @@ void range_of(std::span<const double> values, double& lo, double& hi) {
   }
 }
 
+void draw_markers(std::string& svg, std::span<const PlotMarker> markers, const Ticks& x, double top,
+                  double panel_block, std::size_t panels, double plot_width, double panel_height) {
+  if (markers.empty()) return;
+  svg += "<g class=\"markers\" id=\"markers\">\n";
+  for (std::size_t k = 0; k < markers.size(); ++k) {
+    const PlotMarker& marker = markers[k];
+    if (!std::isfinite(marker.time) || marker.time < x.lo || marker.time > x.hi) continue;
+    const double px = kMarginLeft + (marker.time - x.lo) / (x.hi - x.lo) * plot_width;
+    for (std::size_t i = 0; i < panels; ++i) {
+      const double y = top + panel_block * static_cast<double>(i) + kHeaderHeight;
+      svg += "<line x1=\"" + coordinate(px) + "\" y1=\"" + coordinate(y) + "\" x2=\"" +
+             coordinate(px) + "\" y2=\"" + coordinate(y + panel_height) +
+             "\" stroke=\"#555555\" stroke-width=\"1\" stroke-dasharray=\"4 3\"/>\n";
+    }
+    svg += "<text x=\"" + coordinate(px + 3.0) + "\" y=\"" +
+           coordinate(top + kHeaderHeight + 12.0 + 13.0 * static_cast<double>(k % 4)) +
+           "\" fill=\"#333333\">" + escape(marker.label) + "</text>\n";
+  }
+  svg += "</g>\n";
+}
+
 }  // namespace
 
 std::string svg_plot(std::span<const double> time, const std::vector<PlotPanel>& panels,
                      const PlotOptions& options) {
+  return svg_plot(time, panels, options, {});
+}
+
+std::string svg_plot(std::span<const double> time, const std::vector<PlotPanel>& panels,
+                     const PlotOptions& options, std::span<const PlotMarker> markers) {
   if (panels.empty()) throw std::invalid_argument("svg_plot: no panel to draw");
   for (const PlotPanel& panel : panels) {
     for (const PlotSeries& series : panel.series) {
@@ -373,6 +399,7 @@ std::string svg_plot(std::span<const double> time, const std::vector<PlotPanel>&
                 x_ticks,     nice_ticks(lo, hi)};
     draw_panel(svg, time, panel, frame, i + 1 == panels.size());
   }
+  draw_markers(svg, markers, x_ticks, top, panel_block, panels.size(), plot_width, panel_height);
   svg += "</svg>\n";
   return svg;
 }

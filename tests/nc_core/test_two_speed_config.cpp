@@ -1,7 +1,6 @@
 // The two-speed configuration fields (SPEC E, API.md "Two-speed axis"): the rules between them
-// on a two-speed axis, JSON round trip and errors with the JSON pointer, and the refusal of kind
-// two_speed by validate(), Kernel::add_axis and from_json until the kernel drives a two-speed
-// axis.
+// on a two-speed axis, JSON round trip and errors with the JSON pointer, and Kernel::add_axis /
+// from_json taking a valid two-speed axis and refusing a broken one.
 #include <catch2/catch.hpp>
 
 #include <string>
@@ -108,28 +107,36 @@ TEST_CASE("an enabled looping distance must exceed both braking distances togeth
   CHECK_NOTHROW(nc::validate_two_speed(c));
 }
 
-TEST_CASE("a valid two-speed axis is refused until the kernel drives it", "[config][two_speed]") {
+TEST_CASE("the kernel takes a valid two-speed axis and refuses a broken one whole",
+          "[config][two_speed]") {
   const nc::AxisConfig c = named_axis(nc::AxisKind::kTwoSpeed);
-  REQUIRE_NOTHROW(nc::validate_two_speed(c));
-  auto e = error_of([&] { nc::validate(c); });
-  REQUIRE(e);
-  CHECK(e->what() ==
-        std::string(R"(/kind: two-speed axes are not yet driven by the kernel (got "two_speed"))"));
+  REQUIRE_NOTHROW(nc::validate(c));
 
   nc::Kernel kernel;
   nc::AxisConfig servo = named_axis();
   servo.name = std::string("X");  // GCC 12 warns falsely (-Wrestrict) on = "X"
   kernel.add_axis(servo);
-  e = error_of([&] { kernel.add_axis(c); });
+  nc::AxisConfig broken = c;
+  broken.braking_distance_positive = broken.creep_distance_positive + 1.0;
+  auto e = error_of([&] { kernel.add_axis(broken); });
   REQUIRE(e);
-  CHECK(e->pointer() == "/kind");
+  CHECK(e->pointer() == "/braking_distance_positive");
   CHECK(kernel.axis_count() == 1);  // nothing added, the servo axis untouched
+  kernel.add_axis(c);
+  CHECK(kernel.axis_count() == 2);
+  CHECK(kernel.config("T").kind == nc::AxisKind::kTwoSpeed);
+  CHECK(kernel.two_speed_output("T").nControlByte != 0);  // brake applied: bBreak set
+  e = error_of([&] { (void)kernel.two_speed_output("X"); });
+  REQUIRE(e);
+  CHECK(e->rule() == "has this axis, but not of kind two_speed");
 
-  const json document = {{"axes", {{{"name", "X"}}, {{"name", "T"}, {"kind", "two_speed"}}}}};
+  json document = {{"axes", {{{"name", "X"}}, {{"name", "T"}, {"kind", "two_speed"}}}}};
+  const nc::Kernel from_json = nc::Kernel::from_json(document);
+  CHECK(from_json.config("T").kind == nc::AxisKind::kTwoSpeed);
+  document["axes"][1]["creep_velocity"] = 600.0;  // above rapid_velocity (500 by default)
   e = error_of([&] { (void)nc::Kernel::from_json(document); });
   REQUIRE(e);
-  CHECK(e->pointer() == "/axes/1/kind");
-  CHECK(e->rule() == "two-speed axes are not yet driven by the kernel");
+  CHECK(e->pointer() == "/axes/1/creep_velocity");
 }
 
 TEST_CASE("the two-speed fields go through JSON unchanged", "[config][two_speed]") {

@@ -126,8 +126,9 @@ class Loop {
 
 // Index of the first sample at or after `from` for which `pred` holds; kNotFound when none.
 inline constexpr std::size_t kNotFound = static_cast<std::size_t>(-1);
-template <class Pred>
-std::size_t first(const std::vector<Sample>& trace, Pred pred, std::size_t from = 0) {
+// Any trace whose samples have `state` and `image` (also the kernel rig's, tsk::Sample).
+template <class Trace, class Pred>
+std::size_t first(const Trace& trace, Pred pred, std::size_t from = 0) {
   for (std::size_t i = from; i < trace.size(); ++i) {
     if (pred(trace[i])) return i;
   }
@@ -135,9 +136,10 @@ std::size_t first(const std::vector<Sample>& trace, Pred pred, std::size_t from 
 }
 
 // The nAxisState values in order, each run of equal values once (21, 22, 23, 24, 20).
-inline std::vector<uint32_t> state_sequence(const std::vector<Sample>& trace) {
+template <class Trace>
+std::vector<uint32_t> state_sequence(const Trace& trace) {
   std::vector<uint32_t> out;
-  for (const Sample& s : trace) {
+  for (const auto& s : trace) {
     const auto v = static_cast<uint32_t>(s.state);
     if (out.empty() || out.back() != v) out.push_back(v);
   }
@@ -145,8 +147,9 @@ inline std::vector<uint32_t> state_sequence(const std::vector<Sample>& trace) {
 }
 
 // Every cycle's image: both control bytes consistent, nothing in the reserved fields.
-inline bool images_consistent(const std::vector<Sample>& trace) {
-  for (const Sample& s : trace) {
+template <class Trace>
+bool images_consistent(const Trace& trace) {
+  for (const auto& s : trace) {
     if (!plc::control_bytes_consistent(s.image) || s.image.nReserved != 0 ||
         s.image.nOutData1 != 0 || s.image.nOutData2 != 0) {
       return false;

@@ -19,7 +19,7 @@ struct KernelConfig {
 enum class AxisKind {
   kContinuous,  // servo axis: position controller + drive model + encoder
   kEncoder,     // encoder / virtual axis: set = actual, no controller, no compensation
-  kTwoSpeed,    // two-speed (rapid/creep) discrete axis (SPEC E, seed 004); not yet driven
+  kTwoSpeed,    // two-speed (rapid/creep) discrete axis (SPEC E, seed 004)
 };
 
 enum class DriveModel {

@@ -25,6 +25,7 @@
 #include "nc_core/coupling_graph.hpp"
 #include "plc_interface/axis_ref.hpp"
 #include "plc_interface/hli.hpp"
+#include "plc_interface/two_speed.hpp"
 
 namespace nc {
 
@@ -66,6 +67,10 @@ class Kernel {
   // The simulated reference cam of an axis (AxisConfig::homing_cam_position / _width), a digital
   // input for the PLC to pass to MC_Home.bCalibrationCam. Set-up lookup by name (ConfigError).
   bool reference_cam(std::string_view name) const;
+  // Set-up lookup, read in the cycle: the 12-byte NC→I/O image of the two-speed axis `name`
+  // (SPEC E4), as written by the last cycle; the reference stays valid for the kernel's life.
+  // ConfigError when there is no such axis or it is not of kind kTwoSpeed.
+  const plc::NCTOIO_DRIVE_TWO_SPEED& two_speed_output(std::string_view name) const;
 
   // Cycle function: one NC cycle, phase by phase over all axes (docs/architecture.md "One
   // tick"): commands, set values (masters before slaves), couplings on drive positions, position

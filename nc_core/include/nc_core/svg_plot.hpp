@@ -43,6 +43,14 @@ struct PlotPanel {
   std::vector<PlotSeries> series;
 };
 
+// A moment to mark (e.g. the seed's T0 … T5): a dashed vertical line through every panel, its
+// label at the top of the first one (on four staggered rows in the order given, so that close
+// markers stay legible). Markers outside the time axis are not drawn.
+struct PlotMarker {
+  double time = 0.0;  // s
+  std::string label;
+};
+
 struct PlotOptions {
   std::string title;       // drawn above the first panel; empty for none
   int width = 1000;        // px
@@ -53,6 +61,9 @@ struct PlotOptions {
 // different length than `time`, or when there is no panel.
 std::string svg_plot(std::span<const double> time, const std::vector<PlotPanel>& panels,
                      const PlotOptions& options = {});
+// The same with `markers` drawn over the panels.
+std::string svg_plot(std::span<const double> time, const std::vector<PlotPanel>& panels,
+                     const PlotOptions& options, std::span<const PlotMarker> markers);
 
 // The four panels of the seed's figures for one axis of a scope: position (SetPos, ActPos),
 // velocity (SetVelo, ActVelo), acceleration (SetAcc, ActAcc) and following error (PosDiff), in

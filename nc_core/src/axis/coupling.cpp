@@ -49,6 +49,8 @@ ErrorCode ServoAxis::gear_in(const plc::Command& command, CouplingPort& port) no
   }
   const auto master_index = static_cast<uint32_t>(command.other_axis);
   ServoAxis& master = *port.axes[master_index];
+  // A two-speed axis has no set position to follow or to be followed by (seed 004).
+  if (master.two_speed_) return ErrorCode::kAxisKindNotAllowed;
   if (slave_link_.coupled) {
     // A new rising edge for the same slave and master: the factor changes at once with the
     // slave's position continuous (SPEC C2). Another master needs MC_GearOut first.

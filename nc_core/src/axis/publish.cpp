@@ -18,6 +18,7 @@ double modulo(double p, double factor) noexcept {
 }  // namespace
 
 void ServoAxis::phase_publish(uint64_t cycle_counter) noexcept {
+  if (two_speed_) return two_speed_->phase_publish(cycle_counter, static_cast<int32_t>(index_));
   using plc::AxisState;
   plc::NCTOPLC_AXIS_REF& out = channel_.ref().NcToPlc;
   const double actual = drive_.measured_position();

@@ -20,10 +20,14 @@ ServoAxis::ServoAxis(const AxisConfig& config, double cycle_time, std::size_t in
   set_ = KinematicState{drive_.measured_position(), 0.0, 0.0};
   previous_set_position_ = set_.p;
   target_ = set_.p;
+  if (config_.kind == AxisKind::kTwoSpeed) {
+    two_speed_ = std::make_unique<TwoSpeedAxis>(config_, cycle_time_, channel_);
+  }
   phase_publish(0);
 }
 
 void ServoAxis::phase_commands(CouplingPort& port) noexcept {
+  if (two_speed_) return two_speed_->phase_commands();
   error_event_ = false;
   drive_command_given_ = false;
   read_override();
@@ -35,6 +39,7 @@ void ServoAxis::phase_commands(CouplingPort& port) noexcept {
 
 void ServoAxis::phase_set_values(AxisSnapshot& snapshot,
                                  std::span<const AxisSnapshot> snapshots) noexcept {
+  if (two_speed_) return two_speed_->phase_set_values(snapshot);
   if (slave_link_.coupled) {
     // Seed 000 §3.2.2: slave target velocity = coupling factor × master target velocity; the
     // target position likewise (a compensation on the slave moves it on, seed 000 §3.2.4).
@@ -63,6 +68,7 @@ void ServoAxis::phase_set_values(AxisSnapshot& snapshot,
 
 void ServoAxis::phase_drive_command(const KinematicState& drive, ErrorCode stop,
                                     plc::CoupleState role) noexcept {
+  if (two_speed_) return;  // never an HLI target (the stage refuses it, 0x4040): d = q
   if (stop != ErrorCode::kNone) raise_error(stop);
   hli_role_ = role;
   drive_command_ = drive;
@@ -71,6 +77,7 @@ void ServoAxis::phase_drive_command(const KinematicState& drive, ErrorCode stop,
 }
 
 void ServoAxis::phase_drive(AxisSnapshot& snapshot) noexcept {
+  if (two_speed_) return two_speed_->phase_drive(snapshot);
   control_and_drive();
   previous_drive_position_ = drive_command().p;
   snapshot.set_position = set_.p;  // without the controller enable it follows the actual one
@@ -82,6 +89,7 @@ void ServoAxis::phase_drive(AxisSnapshot& snapshot) noexcept {
 }
 
 void ServoAxis::phase_monitors(AxisSnapshot& snapshot) noexcept {
+  if (two_speed_) return two_speed_->phase_monitors(snapshot);
   run_monitors();
   finish_job();
   snapshot.error = channel_.error();

@@ -5,7 +5,8 @@
 // phase_set_values, phase_drive, phase_monitors, phase_publish. What the PLC side sees lives in
 // the AxisChannel; a start is planned into the kernel's one scratch profile. The constructor is
 // set-up (allocates the dead-time line); everything else runs in the cycle: noexcept, no
-// allocation.
+// allocation. An axis of kind kTwoSpeed is a slot of the same type whose phases hand over to its
+// TwoSpeedAxis (two_speed/two_speed_axis.hpp) on the same AxisChannel.
 #pragma once
 
 #include <cstddef>
@@ -30,6 +31,8 @@
 #include "nc_core/coupling_graph.hpp"
 #include "nc_core/profile.hpp"
 #include "plc_interface/axis_ref.hpp"
+#include "plc_interface/two_speed.hpp"
+#include "two_speed/two_speed_axis.hpp"
 
 namespace nc::detail {
 
@@ -64,6 +67,10 @@ class ServoAxis {
   const AxisConfig& config() const noexcept { return config_; }
   // The simulated reference cam's digital input (AxisConfig::homing_cam_*), on the raw encoder.
   bool reference_cam() const noexcept;
+  // Kind kTwoSpeed: the 12-byte drive image of this cycle; nullptr for every other kind.
+  const plc::NCTOIO_DRIVE_TWO_SPEED* two_speed_output() const noexcept {
+    return two_speed_ ? &two_speed_->output() : nullptr;
+  }
 
   // The phases of one NC cycle (steps a … f of docs/architecture.md "One tick"); the kernel
   // calls each for every axis before the next. The snapshot is what other axes may read.
@@ -299,6 +306,9 @@ class ServoAxis {
   bool has_been_stopped_ = false;
   bool error_event_ = false;  // an error was raised in this cycle
   uint32_t errors_raised_ = 0;
+
+  // Kind kTwoSpeed: the phases run this instead of the servo path (AxisKind dispatch).
+  std::unique_ptr<TwoSpeedAxis> two_speed_;
 };
 
 }  // namespace nc::detail

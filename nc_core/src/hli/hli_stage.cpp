@@ -50,6 +50,7 @@ AxisSetup axis_setup(const AxisConfig& config) {
   s.sw_limit_max = config.sw_limit_max;
   s.forward_mapping = config.recalc_link_main_input_position;
   s.forward_mapping_absolute = config.recalc_input_position_absolute;
+  s.couplable = config.kind != AxisKind::kTwoSpeed;
   return s;
 }
 
@@ -218,6 +219,7 @@ plc::ErrorCode HliStage::parse(const h::HLI_AX_COUPLING_COMMAND& command,
     if (desc.mode > h::HLI_AXIS_COUPLING_FRACT) return ErrorCode::kBlockInputOutOfRange;
     const std::size_t source = index_of(desc.ax_nr);
     if (source == kNoAxis) return ErrorCode::kInvalidAxisReference;
+    if (!setups_[source].couplable) return ErrorCode::kAxisKindNotAllowed;
     Entry& e = list.entries[list.count++];
     e.source = source;
     e.shown = h::HLI_AX_COUPLING_STATE_DESC{desc.ax_nr, desc.mode};
@@ -293,7 +295,9 @@ void HliStage::evaluate(std::size_t target, ErrorCode refusal, const Outputs& ou
   h::HLI_AX_COUPLING& unit = units_[target].lr_mc_control.axis_coupling;
   unit.command_w.semaphor_rw = false;  // reset in the cycle it is evaluated
   Candidate list;
-  ErrorCode code = refusal != ErrorCode::kNone ? refusal : parse(unit.command_w, list);
+  ErrorCode code = !setups_[target].couplable    ? ErrorCode::kAxisKindNotAllowed
+                   : refusal != ErrorCode::kNone ? refusal
+                                                 : parse(unit.command_w, list);
   if (code == ErrorCode::kNone && makes_loop(target, list)) code = ErrorCode::kHliCouplingLoop;
   if (code != ErrorCode::kNone) {
     unit.state_r.error_r = plc::to_id(code);  // refused: the list in force stays

@@ -41,6 +41,7 @@ struct AxisSetup {
   double sw_limit_max = 0.0;              // mm
   bool forward_mapping = false;           // P-AXIS-00436
   bool forward_mapping_absolute = false;  // P-AXIS-00460
+  bool couplable = true;  // false (two-speed axis): neither source nor target of a list, 0x4040
 };
 
 // The stage's view of an axis (config.id must already be the effective logical number).
