@@ -2,7 +2,8 @@
 // every call; with Enable FALSE every output is FALSE / 0.
 //  - MC_ReadStatus: one PLCopen state boolean from NcToPlc.AxisState (Tc2_MC2 MC_AxisStates
 //    values), ConstantVelocity from StateDWord bit 12, Accelerating / Decelerating from the sign
-//    of SetAcc relative to SetVelo; an AxisState without a PLCopen state: Error 0x4040.
+//    of SetAcc relative to SetVelo; a two-speed nAxisState mapped to its PLCopen state; any
+//    other AxisState without a PLCopen state: Error 0x4040.
 //  - MC_ReadActualPosition: Position = ActPos.
 //  - MC_ReadAxisError: AxisErrorID = NcToPlc.ErrorCode.
 #include <catch2/catch.hpp>
@@ -14,6 +15,7 @@
 #include "fb/mc_read_axis_error.hpp"
 #include "fb/mc_read_status.hpp"
 #include "plc_interface/axis_ref.hpp"
+#include "plc_interface/two_speed.hpp"
 
 namespace {
 
@@ -50,7 +52,7 @@ TEST_CASE("MC_ReadStatus shows exactly the PLCopen state the NC publishes", "[fb
 
 TEST_CASE("MC_ReadStatus: an AxisState without a PLCopen state gives Error 0x4040, not Valid",
           "[fb][read]") {
-  const uint32_t state = GENERATE(0U, 9U, 20U, 24U);  // undefined; two-speed nAxisState values
+  const uint32_t state = GENERATE(9U, 19U, 25U, 1000U);  // neither PLCopen nor two-speed values
   INFO("AxisState " << state);
   plc::AXIS_REF axis{};
   axis.NcToPlc.AxisState = state;
@@ -61,6 +63,41 @@ TEST_CASE("MC_ReadStatus: an AxisState without a PLCopen state gives Error 0x404
   REQUIRE(status.Error);
   REQUIRE(status.ErrorID == 0x4040);
   REQUIRE(states_shown(status) == 0);
+}
+
+TEST_CASE("MC_ReadStatus: a two-speed nAxisState (SPEC E5) maps to one PLCopen state",
+          "[fb][read][two_speed]") {
+  using S = plc::TwoSpeedAxisState;
+  using Flag = bool fb::MC_ReadStatus::*;
+  const uint32_t operational = plc::bit_mask(plc::kStateOperational);
+  const uint32_t stopped = operational | plc::bit_mask(plc::kStateHasBeenStopped);
+  const uint32_t error = plc::bit_mask(plc::kStateError);
+  struct Row {
+    S state;
+    uint32_t word;
+    Flag flag;
+  };
+  const Row row =
+      GENERATE_COPY(Row{S::kInactive, 0U, &fb::MC_ReadStatus::Disabled},
+                    Row{S::kInactive, operational, &fb::MC_ReadStatus::StandStill},
+                    Row{S::kStopped, operational, &fb::MC_ReadStatus::StandStill},
+                    Row{S::kMainTravel, operational, &fb::MC_ReadStatus::DiscreteMotion},
+                    Row{S::kLowSpeedTravel, operational, &fb::MC_ReadStatus::DiscreteMotion},
+                    Row{S::kLowSpeedTravel, stopped, &fb::MC_ReadStatus::Stopping},
+                    Row{S::kBrakeIncidenceDelay, stopped, &fb::MC_ReadStatus::Stopping},
+                    Row{S::kInactive, error, &fb::MC_ReadStatus::ErrorStop},
+                    Row{S::kMainTravel, operational | error, &fb::MC_ReadStatus::ErrorStop});
+  INFO("nAxisState " << static_cast<uint32_t>(row.state) << " StateDWord " << row.word);
+  plc::AXIS_REF axis{};
+  axis.NcToPlc.AxisState = static_cast<uint32_t>(row.state);
+  axis.NcToPlc.StateDWord = row.word;
+  fb::MC_ReadStatus status;
+  status.Enable = true;
+  status(axis);
+  REQUIRE(status.Valid);
+  REQUIRE_FALSE(status.Error);
+  REQUIRE(status.*row.flag);
+  REQUIRE(states_shown(status) == 1);
 }
 
 TEST_CASE("MC_ReadStatus: Accelerating, Decelerating and ConstantVelocity", "[fb][read]") {

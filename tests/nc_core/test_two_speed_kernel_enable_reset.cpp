@@ -2,7 +2,8 @@
 // nAxisState 0 before the first start and while disabled): losing the controller enable during
 // a positioning fails it with 0x4356, the brake comes on at once and nAxisState is 0; a feed
 // enable lost in the direction of travel fails it with 0x4358 / 0x4357; MC_Reset clears the
-// error and the next positioning runs. MC_ReadStatus has no PLCopen state for nAxisState (0x4040).
+// error and the next positioning runs. MC_ReadStatus shows the PLCopen state that nAxisState and
+// the StateDWord give (Disabled, StandStill, DiscreteMotion, Stopping, ErrorStop).
 #include <catch2/catch.hpp>
 
 #include "two_speed_kernel_rig.hpp"
@@ -96,12 +97,41 @@ TEST_CASE("a feed enable lost in the direction of travel fails the positioning",
   CHECK(rig.image().nControlByte == plc::bit_mask(C::bBreak));
 }
 
-TEST_CASE("MC_ReadStatus has no PLCopen state for a two-speed axis", "[two_speed][kernel]") {
+TEST_CASE("MC_ReadStatus on a two-speed axis: StandStill, DiscreteMotion, Stopping, ErrorStop",
+          "[two_speed][kernel]") {
   tsk::Rig rig;
   fb::MC_ReadStatus status;
   status.Enable = true;
-  status(rig.axis);
-  CHECK(status.Error);
-  CHECK(status.ErrorID == 0x4040U);
-  CHECK_FALSE(status.Valid);
+  const auto read = [&] {
+    status(rig.axis);
+    REQUIRE(status.Valid);
+    REQUIRE_FALSE(status.Error);
+  };
+  rig.cycle();
+  read();
+  CHECK(status.StandStill);  // enabled, nAxisState 0 before the first start
+  start_and_run(rig, 1000.0, 200);
+  read();
+  CHECK(status.DiscreteMotion);
+  rig.stop.Execute = true;
+  rig.cycle();
+  rig.cycle();
+  REQUIRE(rig.state() != State::kStopped);
+  read();
+  CHECK(status.Stopping);
+  REQUIRE(rig.cycles_until([&] { return rig.stop.Done || rig.stop.Error; }) > 0);
+  CHECK(rig.state() == State::kStopped);
+  read();
+  CHECK(status.StandStill);
+  rig.stop.Execute = false;
+  rig.cycle();
+  // Disabled while travelling: 0x4356, ErrorStop (the error bit wins over Disabled).
+  start_and_run(rig, 2000.0, 200);
+  rig.power.Enable = false;
+  rig.cycle();
+  read();
+  CHECK(status.ErrorStop);
+  reset(rig);
+  read();
+  CHECK(status.Disabled);
 }

@@ -3,9 +3,10 @@
 //
 // Enable-type block: while Enable is TRUE it reads NcToPlc on every call and shows Valid and
 // Busy; with Enable FALSE every output is FALSE. The state booleans come from NcToPlc.AxisState
-// (plc::AxisState, the values of Tc2_MC2's MC_AxisStates); exactly one of them is TRUE. An
-// AxisState outside that set (a two-speed axis publishes its nAxisState there) has no PLCopen
-// state: Error with 0x4040, Valid FALSE.
+// (plc::AxisState, the values of Tc2_MC2's MC_AxisStates); exactly one of them is TRUE. A
+// two-speed axis publishes its nAxisState there (0, 20-24): ErrorStop with the error bit,
+// Disabled without Operational, StandStill at 0 / 20, else Stopping after a stop (HasBeenStopped)
+// or DiscreteMotion. Any other value has no PLCopen state: Error with 0x4040, Valid FALSE.
 // ConstantVelocity = StateDWord bit 12. Accelerating / Decelerating: the set acceleration
 // makes |SetVelo| grow / shrink (from rest, any set acceleration is accelerating); neither
 // while ConstantVelocity is set. Status: the StateDWord bits Tc2_MC2's ST_AxisStatus carries
