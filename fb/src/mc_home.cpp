@@ -6,6 +6,8 @@ void MC_Home::operator()(plc::AXIS_REF& axis) noexcept {
   axis.PlcToNc.ControlDWord =
       plc::with_bit(axis.PlcToNc.ControlDWord, plc::kControlHomingSensor, bCalibrationCam);
   const detail::ExecuteOutputs out = block_(Execute, axis, [this]() noexcept {
+    // The NC buffers moves and halts only (docs/behaviour.md "BufferMode"): homing aborts.
+    if (BufferMode != MC_Aborting) return detail::refuse(plc::ErrorCode::kBufferModeNotSupported);
     detail::Start start = detail::motion_start(plc::CommandType::kHome,
                                                {.position = Position, .buffer_mode = BufferMode});
     start.command.mode = HomingMode;

@@ -8,6 +8,7 @@
 //  - MC_ReadAxisError: AxisErrorID = NcToPlc.ErrorCode.
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <cstdint>
 #include <limits>
 
@@ -68,36 +69,43 @@ TEST_CASE("MC_ReadStatus: an AxisState without a PLCopen state gives Error 0x404
 TEST_CASE("MC_ReadStatus: a two-speed nAxisState (SPEC E5) maps to one PLCopen state",
           "[fb][read][two_speed]") {
   using S = plc::TwoSpeedAxisState;
-  using Flag = bool fb::MC_ReadStatus::*;
-  const uint32_t operational = plc::bit_mask(plc::kStateOperational);
-  const uint32_t stopped = operational | plc::bit_mask(plc::kStateHasBeenStopped);
-  const uint32_t error = plc::bit_mask(plc::kStateError);
+  using A = plc::AxisState;
+  const uint32_t operational = 1U << plc::kStateOperational;
+  const uint32_t stopped = operational | 1U << plc::kStateHasBeenStopped;
+  const uint32_t error = 1U << plc::kStateError;
   struct Row {
     S state;
     uint32_t word;
-    Flag flag;
+    A expected;
   };
-  const Row row =
-      GENERATE_COPY(Row{S::kInactive, 0U, &fb::MC_ReadStatus::Disabled},
-                    Row{S::kInactive, operational, &fb::MC_ReadStatus::StandStill},
-                    Row{S::kStopped, operational, &fb::MC_ReadStatus::StandStill},
-                    Row{S::kMainTravel, operational, &fb::MC_ReadStatus::DiscreteMotion},
-                    Row{S::kLowSpeedTravel, operational, &fb::MC_ReadStatus::DiscreteMotion},
-                    Row{S::kLowSpeedTravel, stopped, &fb::MC_ReadStatus::Stopping},
-                    Row{S::kBrakeIncidenceDelay, stopped, &fb::MC_ReadStatus::Stopping},
-                    Row{S::kInactive, error, &fb::MC_ReadStatus::ErrorStop},
-                    Row{S::kMainTravel, operational | error, &fb::MC_ReadStatus::ErrorStop});
-  INFO("nAxisState " << static_cast<uint32_t>(row.state) << " StateDWord " << row.word);
-  plc::AXIS_REF axis{};
-  axis.NcToPlc.AxisState = static_cast<uint32_t>(row.state);
-  axis.NcToPlc.StateDWord = row.word;
-  fb::MC_ReadStatus status;
-  status.Enable = true;
-  status(axis);
-  REQUIRE(status.Valid);
-  REQUIRE_FALSE(status.Error);
-  REQUIRE(status.*row.flag);
-  REQUIRE(states_shown(status) == 1);
+  const std::array<Row, 9> rows{{
+      {S::kInactive, 0U, A::kDisabled},
+      {S::kInactive, operational, A::kStandstill},
+      {S::kStopped, operational, A::kStandstill},
+      {S::kMainTravel, operational, A::kDiscreteMotion},
+      {S::kLowSpeedTravel, operational, A::kDiscreteMotion},
+      {S::kLowSpeedTravel, stopped, A::kStopping},
+      {S::kBrakeIncidenceDelay, stopped, A::kStopping},
+      {S::kInactive, error, A::kErrorStop},
+      {S::kMainTravel, operational | error, A::kErrorStop},
+  }};
+  for (const Row& row : rows) {
+    INFO("nAxisState " << static_cast<uint32_t>(row.state) << " StateDWord " << row.word);
+    plc::AXIS_REF axis{};
+    axis.NcToPlc.AxisState = static_cast<uint32_t>(row.state);
+    axis.NcToPlc.StateDWord = row.word;
+    fb::MC_ReadStatus status;
+    status.Enable = true;
+    status(axis);
+    CHECK(status.Valid);
+    CHECK_FALSE(status.Error);
+    CHECK(states_shown(status) == 1);
+    CHECK(status.Disabled == (row.expected == A::kDisabled));
+    CHECK(status.StandStill == (row.expected == A::kStandstill));
+    CHECK(status.DiscreteMotion == (row.expected == A::kDiscreteMotion));
+    CHECK(status.Stopping == (row.expected == A::kStopping));
+    CHECK(status.ErrorStop == (row.expected == A::kErrorStop));
+  }
 }
 
 TEST_CASE("MC_ReadStatus: Accelerating, Decelerating and ConstantVelocity", "[fb][read]") {

@@ -138,7 +138,8 @@ TEST_CASE("an HLI list with a two-speed source or target is refused with 0x4040"
   x.id = 1;
   nc::AxisConfig t = ts::issue_axis();
   t.id = 2;
-  kernel.add_axis(x);
+  // X enabled, so that its list is refused for the two-speed source, not for X's own enable.
+  kt::set_enables(kernel.add_axis(x), true);
   kernel.add_axis(t);
   kernel.cycle();
   const auto gpAx = kernel.gpAx();
