@@ -6,7 +6,10 @@
 //    and docs/behaviour.md documents as allowed: accelerations / decelerations given to a
 //    move, MC_Halt or MC_Stop; a compensation's VK and AK± on top of the basic motion (B7); the
 //    fed external set values (B8). The widening lasts until the axis rests again. A coupled
-//    slave instead has GearRatio times its master's set velocity and acceleration (C1, C2);
+//    slave instead has GearRatio times its master's set velocity and acceleration (C1, C2); a
+//    slave decoupled in motion goes on as it would have as a slave (C4, factor x its former
+//    master's plan, then a replan from that state), so its own limits are not checked until it
+//    rests;
 //  - every command number posted is answered (leaves kPosted) within 2 NC cycles, its answer
 //    slot is never lost, the states only move forward (posted → active → reached → an outcome),
 //    and an outcome, once given, never changes.
@@ -111,9 +114,12 @@ class AxisWatch {
     pending_ = axis.Mailbox.pending();
     const plc::NCTOPLC_AXIS_REF& n = axis.NcToPlc;
     if (non_finite_field(n) != nullptr) return "NcToPlc double not finite";
-    if (plc::test_bit(n.StateDWord, plc::kStateCoupled)) {
+    const bool coupled = plc::test_bit(n.StateDWord, plc::kStateCoupled);
+    if (was_coupled_ && !coupled) decoupled_ = true;  // rest() ends it at once when at rest
+    was_coupled_ = coupled;
+    if (coupled) {
       if (const char* broken = check_following(n)) return broken;
-    } else {
+    } else if (!decoupled_) {
       if (std::fabs(n.SetVelo) > velocity_ * (1.0 + 1e-9) + 1e-9) {
         return "set velocity above limit";
       }
@@ -171,6 +177,7 @@ class AxisWatch {
   void rest() noexcept {
     velocity_ = base_velocity_;
     acceleration_ = base_acceleration_;
+    decoupled_ = false;
   }
 
   static int rank(plc::CommandState s) noexcept {
@@ -230,6 +237,8 @@ class AxisWatch {
   double velocity_ = 0.0;
   const plc::NCTOPLC_AXIS_REF* master_ = nullptr;
   double acceleration_ = 0.0;
+  bool was_coupled_ = false;
+  bool decoupled_ = false;  // decoupled in motion (C4): own limits unchecked until at rest
 };
 
 }  // namespace fuzz

@@ -1,8 +1,8 @@
 // Refusals around external setpoint generation (seed 000 §2.6 "Activation", SPEC B8): enabling
 // needs an axis without error, controller and feed enables, a known start type and a finite
-// target; a second enable must repeat the start type; beside a PTP motion only the relative type;
-// no PTP start while the generation is enabled. A refused command disturbs nothing: the NC→PLC
-// image stays bit-identical to a twin that never saw it.
+// target within the planner's range; a second enable must repeat the start type; beside a PTP
+// motion only the relative type; no PTP start while the generation is enabled. A refused command
+// disturbs nothing: the NC→PLC image stays bit-identical to a twin that never saw it.
 #include <catch2/catch.hpp>
 
 #include <functional>
@@ -75,6 +75,11 @@ TEST_CASE("enabling is refused on an axis in error, without enables, with a bad 
                 ErrorCode::kPositionNotFinite, nothing);
   check_refused(kt::ext_enable(std::numeric_limits<double>::infinity(), 2),
                 ErrorCode::kPositionNotFinite, nothing);
+  // Beyond the planner's range (|target| > 1e12 mm, as for a move): 0x4222; a relative target
+  // counts from the running move's target (fuzz: 3.6e307 overflowed a slave's TargetPos).
+  check_refused(kt::ext_enable(3.6e307, 1), ErrorCode::kTargetPositionNotAllowed, nothing);
+  check_refused(kt::ext_enable(-1.0e12 - 1.0e6, 1), ErrorCode::kTargetPositionNotAllowed, nothing);
+  check_refused(kt::ext_enable(1.0e12 - 500.0, 2), ErrorCode::kTargetPositionNotAllowed, moving);
 }
 
 TEST_CASE("a second enable must repeat the start type; the same type takes the new target",

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "axis/servo_axis.hpp"
+#include "profile/validate.hpp"
 
 namespace nc::detail {
 
@@ -98,7 +99,12 @@ ErrorCode ServoAxis::enable_external(const plc::Command& command) noexcept {
   // Beside an internal motion only the relative type: two absolute sources cannot coexist.
   if (type == Type::kAbsolute && job_.active()) return ErrorCode::kStartTypeNotAllowed;
 
-  double target = command.position;
+  // Relative: the target refers to the internal generator's target (or position). The target
+  // lies within the planner's range like a move's (fuzz: 3.6e307 overflowed a slave's TargetPos).
+  const double reference =
+      job_.kind() == JobKind::kPosition ? job_.target() + stack_.held() : basic_state().p;
+  const double target = type == Type::kAbsolute ? command.position : command.position + reference;
+  if (const ErrorCode code = check_target(target); code != ErrorCode::kNone) return code;
   if (type == Type::kAbsolute) {
     if (!stack_.external().taking()) {
       base_ = set_;  // the external set values take over from here
@@ -106,10 +112,6 @@ ErrorCode ServoAxis::enable_external(const plc::Command& command) noexcept {
     }
     stack_.external().enable(type, set_, target, config_.ext_setpoint_delay, config_.max_velocity);
   } else {
-    // Relative: the target refers to the internal generator's target (or position).
-    const double reference =
-        job_.kind() == JobKind::kPosition ? job_.target() + stack_.held() : basic_state().p;
-    target += reference;
     stack_.external().enable(type, KinematicState{}, target, config_.ext_setpoint_delay,
                              config_.max_velocity);
   }
