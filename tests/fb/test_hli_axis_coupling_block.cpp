@@ -86,7 +86,8 @@ TEST_CASE("a rising Execute writes the list and sets the semaphore; Done once th
   check_exclusive(b);
 }
 
-TEST_CASE("a refused list gives Error with the NC's 70xxx ID", "[hli][fb]") {
+TEST_CASE("a refused list gives Error with the NC's ID (70397), a new edge starts again",
+          "[hli][fb]") {
   ScriptedHli nc;
   nc.answer = 70397;
   fb::HLI_AxisCoupling b = example_3();

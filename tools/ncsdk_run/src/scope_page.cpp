@@ -35,11 +35,11 @@ std::string scope_page(const nc::Scope& scope, const std::string& title) {
   for (std::size_t at = data.find("</"); at != std::string::npos; at = data.find("</", at + 3))
     data.replace(at, 2, "<\\/");
   std::string page = kScopePageTemplate;
-  const std::string placeholder = "/*NCSDK_TRACE*/null";
-  const std::size_t at = page.find(placeholder);
-  if (at == std::string::npos)
-    throw std::logic_error("scope page template without its placeholder");
-  page.replace(at, placeholder.size(), data);
+  // The template's data slot: `null` (a page that loads without a trace), marked for us.
+  const std::string slot = "/*NCSDK_TRACE*/null";
+  const std::size_t at = page.find(slot);
+  if (at == std::string::npos) throw std::logic_error("scope page template without its data slot");
+  page.replace(at, slot.size(), data);
   return page;
 }
 
