@@ -76,4 +76,27 @@ inline std::string error_line(const char* who, uint32_t error_id, uint32_t axis_
   return text;
 }
 
+// Runs `sample`, writes its trace and plot into `out` and prints its summary with the two file
+// names; true when the sample met its checks (`Sample`: run(), write(dir) → {csv, svg},
+// summary(), ok()).
+template <class Sample>
+bool run_and_show(Sample& sample, const std::filesystem::path& out) {
+  sample.run();
+  const auto [csv, svg] = sample.write(out);
+  std::fputs(sample.summary().c_str(), stdout);
+  std::printf("  trace: %s\n  plot:  %s\n", csv.string().c_str(), svg.string().c_str());
+  return sample.ok();
+}
+
+// One `Sample` per case (constructed from it), each run and shown; true when all met their checks.
+template <class Sample, class Cases>
+bool run_each(const Cases& cases, const std::filesystem::path& out) {
+  bool all_ok = true;
+  for (const auto& one : cases) {
+    Sample sample(one);
+    all_ok = run_and_show(sample, out) && all_ok;
+  }
+  return all_ok;
+}
+
 }  // namespace sample_common

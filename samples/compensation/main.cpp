@@ -10,20 +10,14 @@
 #include <filesystem>
 
 #include "compensation_program.hpp"
+#include "sample_output.hpp"
 
 int main(int argc, char** argv) {
   try {
     const std::filesystem::path out = argc > 1 ? argv[1] : "out";
-    bool all_ok = true;
-    for (const compensation::Figure& figure : compensation::kFigures) {
-      compensation::CompensationSample sample(figure);
-      sample.run();
-      const auto [csv, svg] = sample.write(out);
-      std::fputs(sample.summary().c_str(), stdout);
-      std::printf("  trace: %s\n  plot:  %s\n", csv.string().c_str(), svg.string().c_str());
-      all_ok = all_ok && sample.ok();
-    }
-    return all_ok ? 0 : 1;
+    return sample_common::run_each<compensation::CompensationSample>(compensation::kFigures, out)
+               ? 0
+               : 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "compensation: %s\n", e.what());
     return 2;

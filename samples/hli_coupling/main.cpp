@@ -11,26 +11,15 @@
 #include <filesystem>
 
 #include "hli_coupling_program.hpp"
+#include "sample_output.hpp"
 
 int main(int argc, char** argv) {
   try {
     const std::filesystem::path out = argc > 1 ? argv[1] : "out";
-    bool all_ok = true;
-    const auto show = [](const std::string& summary, const auto& files) {
-      std::fputs(summary.c_str(), stdout);
-      std::printf("  trace: %s\n  plot:  %s\n", files.first.string().c_str(),
-                  files.second.string().c_str());
-    };
-    for (const hli_coupling::Example& example : hli_coupling::kExamples) {
-      hli_coupling::ExampleSample sample(example);
-      sample.run();
-      show(sample.summary(), sample.write(out));
-      all_ok = all_ok && sample.ok();
-    }
+    bool all_ok =
+        sample_common::run_each<hli_coupling::ExampleSample>(hli_coupling::kExamples, out);
     hli_coupling::MappingSample mapping;
-    mapping.run();
-    show(mapping.summary(), mapping.write(out));
-    all_ok = all_ok && mapping.ok();
+    all_ok = sample_common::run_and_show(mapping, out) && all_ok;
     return all_ok ? 0 : 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "hli_coupling: %s\n", e.what());

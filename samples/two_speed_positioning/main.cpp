@@ -10,21 +10,16 @@
 #include <exception>
 #include <filesystem>
 
+#include "sample_output.hpp"
 #include "two_speed_positioning_program.hpp"
 
 int main(int argc, char** argv) {
   try {
     const std::filesystem::path out = argc > 1 ? argv[1] : "out";
-    bool all_ok = true;
-    for (const two_speed_positioning::Example& example : two_speed_positioning::kExamples) {
-      two_speed_positioning::TwoSpeedSample sample(example);
-      sample.run();
-      const auto [csv, svg] = sample.write(out);
-      std::fputs(sample.summary().c_str(), stdout);
-      std::printf("  trace: %s\n  plot:  %s\n", csv.string().c_str(), svg.string().c_str());
-      all_ok = all_ok && sample.ok();
-    }
-    return all_ok ? 0 : 1;
+    return sample_common::run_each<two_speed_positioning::TwoSpeedSample>(
+               two_speed_positioning::kExamples, out)
+               ? 0
+               : 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "two_speed_positioning: %s\n", e.what());
     return 2;
