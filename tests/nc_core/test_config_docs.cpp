@@ -3,22 +3,18 @@
 #include <catch2/catch.hpp>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "nc_core/config.hpp"
+#include "text_file.hpp"
 
 namespace {
 
 std::string read_doc() {
   const auto path =
       std::filesystem::path(__FILE__).parent_path() / ".." / ".." / "docs" / "configuration.md";
-  std::ifstream in(path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  return ncsdk_test::read_text(path);
 }
 
 std::string row(const nc::FieldDoc& f) {

@@ -12,27 +12,21 @@
 // s²/mm, v = (T - sqrt(T² - 2·c·|D|)) / c = 106.85 mm/s for |D| = 250 (below VK = 300).
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include <catch2/catch.hpp>
 
 #include "../../samples/compensation/compensation_program.hpp"
+#include "text_file.hpp"
 #include "well_formed_xml.hpp"
 
 namespace {
 
+using ncsdk_test::read_text;
+
 using compensation::CompensationSample;
 using compensation::Figure;
 using compensation::kFigures;
-
-std::string read_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 struct Expected {
   double end;            // mm
@@ -133,9 +127,9 @@ TEST_CASE("the sample writes one CSV and one well-formed SVG per figure") {
     REQUIRE(sample.run().finished);
     const auto [csv, svg] = sample.write(dir);
     CHECK(csv.filename() == std::string(figure.name) + ".csv");
-    const std::string text = read_file(csv);
+    const std::string text = read_text(csv);
     CHECK(text.find("Axis1.CompensationDistance [mm]") != std::string::npos);
-    const std::string plot = read_file(svg);
+    const std::string plot = read_text(svg);
     CHECK(ncsdk_test::xml_problem(plot).empty());
     CHECK(plot.find("id=\"panel-compensation\"") != std::string::npos);
     CHECK(plot.find(figure.title) != std::string::npos);

@@ -9,17 +9,18 @@
 // 0.3464 s, 0.6928 s in all.
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <span>
-#include <sstream>
 #include <string>
 
 #include <catch2/catch.hpp>
 
 #include "../../samples/ext_setpoint_generator/ext_setpoint_generator_program.hpp"
+#include "text_file.hpp"
 #include "well_formed_xml.hpp"
 
 namespace {
+
+using ncsdk_test::read_text;
 
 using ext_setpoint_generator::ExtSetpointGeneratorSample;
 using ext_setpoint_generator::kLegs;
@@ -34,13 +35,6 @@ Trace trace_of(const nc::Scope& s) {
   return {s.time(),          v("Axis1.SetPos"),      v("Axis1.SetVelo"),
           v("Axis1.SetAcc"), v("MAIN.FedPos"),       v("MAIN.FedVelo"),
           v("MAIN.FedAcc"),  v("MAIN.FedDirection"), v("Axis1.StateDWord")};
-}
-
-std::string read_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 }  // namespace
@@ -149,12 +143,12 @@ TEST_CASE("the sample writes a CSV trace and a well-formed SVG plot with the fed
   ExtSetpointGeneratorSample sample;
   REQUIRE(sample.run().ok());
   const auto [csv, svg] = sample.write(dir);
-  const std::string text = read_file(csv);
+  const std::string text = read_text(csv);
   CHECK(text.rfind("time [s],Axis1.SetPos [mm]", 0) == 0);
   CHECK(text.find("MAIN.FedPos [mm]") != std::string::npos);
   CHECK(static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) ==
         sample.scope().size() + 1);
-  const std::string plot = read_file(svg);
+  const std::string plot = read_text(svg);
   CHECK(ncsdk_test::xml_problem(plot).empty());
   CHECK(plot.find("FedPos") != std::string::npos);
   CHECK(plot.find("id=\"panel-direction\"") != std::string::npos);

@@ -12,23 +12,13 @@
 //   error; CSV + one well-formed SVG with all axes.
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <string>
 
 #include <catch2/catch.hpp>
 
 #include "../../samples/gear_coupling/gear_coupling_program.hpp"
+#include "text_file.hpp"
 #include "well_formed_xml.hpp"
-
-namespace {
-
-std::string contents(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-}  // namespace
 
 namespace {
 
@@ -133,10 +123,10 @@ TEST_CASE("the gear coupling sample writes one CSV and one well-formed SVG with 
   REQUIRE(sample.run().finished);
   const auto [csv, svg] = sample.write(dir);
   CHECK(csv.filename() == "gear_coupling.csv");
-  const std::string text = contents(csv);
+  const std::string text = ncsdk_test::read_text(csv);
   for (const char* column : {"Master.SetPos [mm]", "Slave1.SetVelo [mm/s]", "Slave2.CoupleState"})
     CHECK(text.find(column) != std::string::npos);
-  const std::string plot = contents(svg);
+  const std::string plot = ncsdk_test::read_text(svg);
   CHECK(ncsdk_test::xml_problem(plot).empty());
   for (const char* id : {"panel-position", "panel-velocity", "panel-couple-state"})
     CHECK(plot.find(std::string("id=\"") + id + "\"") != std::string::npos);

@@ -8,7 +8,6 @@
 // A 2000 mm move therefore takes 1.5 s: 0.5 s up, 0.5 s at 2000 mm/s, 0.5 s down.
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -16,9 +15,12 @@
 #include <catch2/catch.hpp>
 
 #include "../../samples/move_axis/move_axis_program.hpp"
+#include "text_file.hpp"
 #include "well_formed_xml.hpp"
 
 namespace {
+
+using ncsdk_test::read_text;
 
 constexpr double kRampTime = 0.5;   // s, 0 → 2000 mm/s
 constexpr double kMoveTime = 1.5;   // s, 2000 mm
@@ -53,13 +55,6 @@ double at(std::span<const double> time, std::span<const double> values, double t
     if (std::fabs(time[i] - t) < std::fabs(time[best] - t)) best = i;
   }
   return values[best];
-}
-
-std::string read_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 std::vector<std::string> split(const std::string& text, char separator) {
@@ -158,7 +153,7 @@ TEST_CASE("the MoveAxis sample writes a CSV trace and an SVG plot that are well-
   REQUIRE(std::filesystem::exists(svg_path));
 
   // CSV: a header of 9 columns, then one row per NC cycle, 1 ms apart, every cell a number.
-  const auto lines = split(read_file(csv_path), '\n');
+  const auto lines = split(read_text(csv_path), '\n');
   REQUIRE(lines.size() == sample.scope().size() + 1);
   const auto header = split(lines[0], ',');
   REQUIRE(header.size() == 9);
@@ -183,7 +178,7 @@ TEST_CASE("the MoveAxis sample writes a CSV trace and an SVG plot that are well-
   CHECK(max_set_pos == 2000.0);
 
   // SVG: well-formed, the four panels, the seed's colours.
-  const std::string svg = read_file(svg_path);
+  const std::string svg = read_text(svg_path);
   CHECK(ncsdk_test::xml_problem(svg).empty());
   for (const char* id :
        {"panel-position", "panel-velocity", "panel-acceleration", "panel-following-error"}) {

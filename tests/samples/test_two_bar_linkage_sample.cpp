@@ -6,25 +6,19 @@
 // windows.
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include <catch2/catch.hpp>
 
 #include "../../samples/two_bar_linkage/two_bar_linkage_program.hpp"
+#include "text_file.hpp"
 #include "well_formed_xml.hpp"
 
 namespace {
 
-using two_bar_linkage::TwoBarLinkageSample;
+using ncsdk_test::read_text;
 
-std::string read_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using two_bar_linkage::TwoBarLinkageSample;
 
 }  // namespace
 
@@ -108,12 +102,12 @@ TEST_CASE("the sample writes the trace, the x-y tool path and the joint plot, we
   TwoBarLinkageSample sample;
   REQUIRE(sample.run().ok());
   const auto files = sample.write(dir);
-  const std::string csv = read_file(files[0]);
+  const std::string csv = read_text(files[0]);
   CHECK(csv.find("Tool.ActX [mm]") != std::string::npos);
-  const std::string path = read_file(files[1]);
+  const std::string path = read_text(files[1]);
   CHECK(ncsdk_test::xml_problem(path).empty());
   CHECK(path.find("tool from actual angles") != std::string::npos);
-  const std::string joints = read_file(files[2]);
+  const std::string joints = read_text(files[2]);
   CHECK(ncsdk_test::xml_problem(joints).empty());
   CHECK(joints.find("id=\"panel-line-deviation\"") != std::string::npos);
   std::filesystem::remove_all(dir);

@@ -12,29 +12,23 @@
 // The sample writes a CSV and a timing-diagram SVG per example with T0 … marked.
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include <catch2/catch.hpp>
 
 #include "../../samples/two_speed_positioning/two_speed_positioning_program.hpp"
+#include "text_file.hpp"
 #include "well_formed_xml.hpp"
 
 namespace {
+
+using ncsdk_test::read_text;
 
 using two_speed_positioning::Change;
 using two_speed_positioning::kExamples;
 using two_speed_positioning::Report;
 using two_speed_positioning::TwoSpeedSample;
 using C = plc::ControlByteBit;
-
-std::string read_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 bool on(const Change& c, C bit) {
   return plc::bit_set(c.control, bit);
@@ -119,11 +113,11 @@ TEST_CASE("the sample writes a CSV and a timing diagram per example", "[two_spee
     TwoSpeedSample sample(example);
     REQUIRE(sample.run().finished);
     const auto [csv, svg] = sample.write(dir);
-    const std::string text = read_file(csv);
+    const std::string text = read_text(csv);
     CHECK(text.rfind("time,ActPos,SetVelo,ActVelo,nAxisState,nControlByte,nExtControlByte,"
                      "bMinusHigh,bMinusLow,bPlusLow,bPlusHigh,bBreakInv,bBreak\n",
                      0) == 0);
-    const std::string plot = read_file(svg);
+    const std::string plot = read_text(svg);
     CHECK(ncsdk_test::xml_problem(plot).empty());
     for (const char* id : {"panel-position", "panel-velocity", "panel-control-byte",
                            "panel-axis-state", "markers"}) {
