@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -32,19 +33,24 @@ inline plc::Command gear_out() {
 }
 
 // `n` seed axes (names "A0" …), enabled, one cycle run. `encoder` marks axis indices that are
-// encoder axes.
+// encoder axes; or tune(i, config) changes axis i's configuration before it is added.
 struct Rig {
   nc::Kernel kernel;
   std::vector<plc::AXIS_REF*> axes;
 
-  explicit Rig(std::size_t n, const std::vector<std::size_t>& encoder = {}) {
+  explicit Rig(std::size_t n, const std::vector<std::size_t>& encoder = {})
+      : Rig(n, [&encoder](std::size_t i, nc::AxisConfig& c) {
+          for (std::size_t e : encoder) {
+            if (e == i) c.kind = nc::AxisKind::kEncoder;
+          }
+        }) {}
+
+  Rig(std::size_t n, const std::function<void(std::size_t, nc::AxisConfig&)>& tune) {
     for (std::size_t i = 0; i < n; ++i) {
       std::string name(1, 'A');
       name += std::to_string(i);
       nc::AxisConfig c = kt::seed_axis(name);
-      for (std::size_t e : encoder) {
-        if (e == i) c.kind = nc::AxisKind::kEncoder;
-      }
+      tune(i, c);
       axes.push_back(&kernel.add_axis(c));
       kt::set_enables(*axes.back(), true);
     }
