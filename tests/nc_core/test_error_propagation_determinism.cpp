@@ -13,11 +13,6 @@
 
 namespace {
 
-struct Step {
-  int cycle;
-  std::function<void(pr::Group&)> act;
-};
-
 void tune(std::size_t i, nc::AxisConfig& c) {
   c.couple_slave_to_actual_values = true;
   if (i == 1) {
@@ -30,7 +25,7 @@ void tune(std::size_t i, nc::AxisConfig& c) {
 
 TEST_CASE("runs with delayed propagation and actual-value coupling are bit-identical",
           "[propagation][determinism]") {
-  const std::vector<Step> script = {
+  const std::vector<gr::Step<pr::Group>> script = {
       {0, [](pr::Group& g) { g.post(1, gr::gear_in(0, 1.0)); }},
       {0, [](pr::Group& g) { g.post(2, gr::gear_in(0, 0.5)); }},
       {0, [](pr::Group& g) { g.post(3, gr::gear_in(1, 2.0)); }},
@@ -50,19 +45,10 @@ TEST_CASE("runs with delayed propagation and actual-value coupling are bit-ident
   };
   pr::Group a(4, tune);
   pr::Group b(4, tune);
-  std::size_t next = 0;
   bool delayed_seen = false;
-  for (int cycle = 0; cycle < 3600; ++cycle) {
-    for (; next < script.size() && script[next].cycle == cycle; ++next) {
-      script[next].act(a);
-      script[next].act(b);
-    }
-    a.kernel.cycle();
-    b.kernel.cycle();
-    for (std::size_t i = 0; i < 4; ++i)
-      REQUIRE(kt::same_image(a.at(i).NcToPlc, b.at(i).NcToPlc));
-    delayed_seen = delayed_seen || a.delayed_bit(1);
-  }
+  CHECK(gr::first_difference(script, a, b, 3600, [&](pr::Group& g) {
+          delayed_seen = delayed_seen || g.delayed_bit(1);
+        }) == -1);
   CHECK(delayed_seen);
   CHECK(a.at(3).NcToPlc.SetVelo == 0.0);
   CHECK(a.at(3).NcToPlc.SetPos != 0.0);  // it followed the push

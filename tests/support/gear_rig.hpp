@@ -85,6 +85,34 @@ struct Rig {
   }
 };
 
+// One step of a determinism script: what the PLC does to a rig before NC cycle `cycle`.
+template <class R>
+struct Step {
+  int cycle;
+  std::function<void(R&)> act;
+};
+
+// Plays `script` (sorted by cycle) on two rigs built alike for `cycles` NC cycles, comparing
+// every axis's NC→PLC image after each; `each(a)` sees rig `a` after every cycle. The first
+// cycle whose images differ, or -1 when they never do.
+template <class R, class Each>
+int first_difference(const std::vector<Step<R>>& script, R& a, R& b, int cycles, Each&& each) {
+  std::size_t next = 0;
+  for (int cycle = 0; cycle < cycles; ++cycle) {
+    for (; next < script.size() && script[next].cycle == cycle; ++next) {
+      script[next].act(a);
+      script[next].act(b);
+    }
+    a.kernel.cycle();
+    b.kernel.cycle();
+    for (std::size_t i = 0; i < a.axes.size(); ++i) {
+      if (!kt::same_image(a.axes[i]->NcToPlc, b.axes[i]->NcToPlc)) return cycle;
+    }
+    each(a);
+  }
+  return -1;
+}
+
 // Two identical rigs: a command goes to the probe only; every axis's image must stay the same.
 struct TwinRigs {
   Rig probe;
