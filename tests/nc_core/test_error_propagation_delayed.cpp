@@ -197,3 +197,28 @@ TEST_CASE("DELAYED with delay 0 acts as INSTANTANEOUS; an uncoupled DELAYED axis
   if (g.error(2) == 0U) REQUIRE(g.until_error(2) > 0);
   CHECK_FALSE(g.delayed_bit(2));
 }
+
+TEST_CASE(
+    "a faulty slave released by MC_GearOut during the delay takes the group reaction "
+    "only to its own slaves",
+    "[propagation][delayed]") {
+  Star s;
+  s.cycles(100);
+  const uint16_t out = s.post(1, gr::gear_out());  // while A1 is in error
+  s.cycles(1);
+  CHECK(s.answer(1, out).state == CommandState::kDone);
+  CHECK(s.at(1).NcToPlc.CoupleState == 1U);  // A3's master only
+  CHECK(s.at(0).NcToPlc.CoupleState == 1U);  // still A2's and A4's
+  CHECK(s.error(1) == kFollowing);
+  CHECK(s.delayed_bit(1));
+  s.cycles(398);  // cycle 499 after the error
+  CHECK(s.error(3) == 0U);
+  s.cycles(1);  // cycle 500: A1's group is A1 and A3 now
+  CHECK(s.error(3) == kFollowing);
+  CHECK_FALSE(s.delayed_bit(1));
+  for (const std::size_t i : {0U, 2U, 4U}) {
+    INFO("axis " << i);
+    CHECK(s.error(i) == 0U);
+  }
+  CHECK(s.at(0).NcToPlc.SetVelo == 1000.0);
+}
