@@ -152,6 +152,8 @@ std::string_view error_text(ErrorCode code) noexcept {
       return "homing: setting the position needs the axis at rest without a job";
     case E::kBufferFull:
       return "a buffered command already waits on this axis";
+    case E::kPushByHandControllerEnabled:
+      return "push by hand: the axis has its controller enable (the drive holds it)";
     case E::kHliFractOnReferencedAxis:
       return "FRACT coupling: the axis cannot stop before a software limit";
     case E::kHliChangeWhileMoving:

@@ -43,6 +43,7 @@ ErrorCode ServoAxis::gear_in(const plc::Command& command, CouplingPort& port) no
   // Fuzz finding K6: a ratio of 8.4e301 made the slave's set values overflow (SetAcc inf). With
   // |ratio| <= 1e6 a cascade of three (4 axes) scales the master's values by at most 1e18.
   if (std::abs(command.ratio) > kMaxGearRatio) return ErrorCode::kGearRatioOutOfRange;
+  if (slave_link_.detached) return ErrorCode::kFunctionNotAllowed;  // C7: MC_GearOut first
   if (config_.kind == AxisKind::kEncoder) return ErrorCode::kAxisKindNotAllowed;
   if (command.other_axis < 0 || static_cast<std::size_t>(command.other_axis) >= port.axes.size()) {
     return ErrorCode::kInvalidAxisReference;
@@ -111,6 +112,7 @@ bool ServoAxis::decoupling_chain(CouplingPort& port, DecouplingChain& chain,
 }
 
 ErrorCode ServoAxis::gear_out(const plc::Command& command, CouplingPort& port) noexcept {
+  if (slave_link_.detached) return release_detached(command, port);  // C7 DELAYED
   if (!slave_link_.coupled) return ErrorCode::kDecouplingNotAllowed;
   // Online when the slave moves (its master's velocity is not 0); at override 0 or at rest it
   // decouples offline (seed 000 §3.2.3).

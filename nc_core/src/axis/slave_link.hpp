@@ -17,8 +17,11 @@ namespace nc::detail {
 struct SlaveLink {
   bool coupled = false;
   bool retake_offset = false;  // the offset is taken again from the positions in the next sample
-  uint32_t master = 0;         // kernel index of the master
-  uint16_t command = 0;        // the MC_GearIn command number in force (CmdNo while coupled)
+  // SPEC C7 DELAYED: the slave left this coupling on its own error (coupled is false); the link
+  // stays in the coupling graph, so the group is still known, until MC_GearOut.
+  bool detached = false;
+  uint32_t master = 0;   // kernel index of the master
+  uint16_t command = 0;  // the MC_GearIn command number in force (CmdNo while coupled)
   double factor = 1.0;
   double offset = 0.0;
 
@@ -27,6 +30,7 @@ struct SlaveLink {
               double master_p) noexcept {
     coupled = true;
     retake_offset = false;
+    detached = false;
     master = master_index;
     command = number;
     factor = ratio;

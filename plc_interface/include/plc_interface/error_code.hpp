@@ -90,6 +90,8 @@ enum class ErrorCode : uint32_t {
   kHomingSyncPulseNotFound = 0x4F22,  // cam edge or sync pulse not within the search distance
   kHomingAxisMoving = 0x4F23,         // MC_Direct while the axis has a job or moves
   kBufferFull = 0x4F60,               // a buffered command already waits on this axis
+  // Error propagation and actual-value coupling (SPEC C7, C8; ncsdk's range 0x4F90 … 0x4F9F).
+  kPushByHandControllerEnabled = 0x4F90,  // Kernel::push_by_hand on an axis that is enabled
 
   // --- CNC HLI coupling IDs (decimal) ---
   kHliFractOnReferencedAxis = 70195,
