@@ -81,7 +81,18 @@ TEST_CASE("a start or target beyond 1e12 is refused with the code of the quantit
     check_refused(nc::plan_velocity({0.0, 0.0, bad}, 0.0, kLimits),
                   ErrorCode::kAccelerationNotAllowed);
     check_refused(nc::plan_stop({0.0, bad, 0.0}, 5000.0, 50000.0), ErrorCode::kVelocityNotAllowed);
+    // The four-argument call checks its target the same way (fuzz finding P11: it took any
+    // finite target).
+    check_refused(nc::plan_position({0.0, 0.0, 0.0}, bad, 100.0, kLimits),
+                  ErrorCode::kTargetPositionNotAllowed);
+    check_refused(nc::plan_position({bad, 0.0, 0.0}, 0.0, -100.0, kLimits),
+                  ErrorCode::kTargetPositionNotAllowed);
   }
+  // 1e12 itself is planned.
+  const Profile edge = nc::plan_position({1e12 - 1000.0, 0.0, 0.0}, 1e12, 100.0, kLimits);
+  REQUIRE(edge.ok());
+  CHECK(profile_checks::check_passing_profile(edge, {1e12 - 1000.0, 0.0, 0.0}, 1e12, 100.0, kLimits)
+            .ok());
 }
 
 TEST_CASE("a subnormal start velocity or acceleration is refused, 1e-100 is planned",
@@ -93,6 +104,16 @@ TEST_CASE("a subnormal start velocity or acceleration is refused, 1e-100 is plan
   check_refused(nc::plan_position({0.0, 0.0, 1.3833838083554903e-322}, 0.0106, small),
                 ErrorCode::kAccelerationNotAllowed);
   check_refused(nc::plan_velocity({0.0, 0.0, 0.0}, 1e-300, small), ErrorCode::kVelocityNotAllowed);
+  // An end velocity of plan_position's four-argument call, as plan_velocity's target (fuzz
+  // finding P11): subnormal or below 1e-100 refused, 1e-100 planned.
+  for (double bad : {4.9406564584124654e-324, -2.2e-308, 1e-300}) {
+    INFO("end velocity " << bad);
+    check_refused(nc::plan_position({0.0, 0.0, 0.0}, 0.0106, bad, small),
+                  ErrorCode::kVelocityNotAllowed);
+  }
+  const Profile slow = nc::plan_position({0.0, 0.0, 0.0}, 0.0106, -1e-100, small);
+  REQUIRE(slow.ok());
+  CHECK(profile_checks::check_passing_profile(slow, {0.0, 0.0, 0.0}, 0.0106, -1e-100, small).ok());
   const KinematicState tiny{0.0, 1e-100, -1e-100};
   const Profile prof = nc::plan_position(tiny, 0.0106, small);
   REQUIRE(prof.ok());
@@ -269,4 +290,42 @@ TEST_CASE("a start acceleration 1e8 times A is refused: its rounding would pass 
   profile_checks::StartRelief relief;
   relief.over_acceleration = true;
   check_velocity_planned({0.0, 0.0, -1.9e6 * 7.2750489832789158e-09}, 0.0, l, relief);
+}
+
+TEST_CASE("a start acceleration 1e8 times the bound its ramp ends at is refused",
+          "[profile][range]") {
+  // Fuzz finding P9: v = 0.12, a = -0.695 with A+ = 7.3e-9, A- = 4.6e-4, J = 2: 1.5e3 times
+  // max(A+, A-), inside P8's bound. The ramp of a back at J crosses v = 0 at a = -0.052 and ends
+  // at A+ (|v| grows again): a = -A+ - 1.3e-16 there, a few ulp of 0.695 and 1.8e-8 of A+. The
+  // start counts against the bound its ramp ends at: 9.5e7 times A+, refused.
+  const Limits l{9074.0000000791624, 7.2752683738651311e-09, 0.00046147382817898422,
+                 2.0004863739013672};
+  const KinematicState p9{8.2572993763189198e-317, 0.12012095731847509, -0.6952196903821245};
+  check_refused(nc::plan_position(p9, 0.00047679222188957981, l),
+                ErrorCode::kStartFarOutsideLimits);
+  check_refused(nc::plan_velocity(p9, 0.0, l), ErrorCode::kStartFarOutsideLimits);
+  check_refused(nc::plan_position(p9, 0.00047679222188957981, -1e-3, l),
+                ErrorCode::kStartFarOutsideLimits);
+
+  profile_checks::StartRelief relief;
+  relief.over_acceleration = true;
+  // The same crossing with A+ = 1.9e6 / ... : a ramp ending at A+ 1.9e6 times below |a0| is
+  // planned within the contract (a = -0.695, v = 0.12: it crosses v = 0 at a = -0.052).
+  const double a0 = 0.6952196903821245;
+  Limits near = l;
+  near.acceleration = a0 / 1.9e6;
+  check_position_planned({0.0, 0.12012095731847509, -a0}, 1e-3, near, relief);
+  check_velocity_planned({0.0, 0.12012095731847509, -a0}, 0.0, near, relief);
+  // The ramp meets A- before v = 0 (a0² + 2J·v0 < A-²): it counts against A- = 4.6e-4, 1.5e3
+  // times, and is planned although it lies 9.5e7 times above A+.
+  const KinematicState before_zero{0.0, 0.2, -a0};
+  CHECK(a0 * a0 - 2.0 * l.jerk * 0.2 < l.deceleration * l.deceleration);
+  check_position_planned(before_zero, 1.0, l, relief);
+  check_velocity_planned(before_zero, 0.0, l, relief);
+  // Growing |v| (v and a of one sign): the ramp ends at A+ from the start; 2.1e6 times A+ with
+  // A- 1e5 times larger is refused, 1.9e6 times planned.
+  const Limits lopsided{1e5, 1e-3, 100.0, 50.0};
+  check_refused(nc::plan_position({0.0, 1.0, 2.1e3}, 100.0, lopsided),
+                ErrorCode::kStartFarOutsideLimits);
+  check_position_planned({0.0, 1.0, 1.9e3}, 100.0, lopsided, relief);
 }

@@ -90,14 +90,18 @@ bool absorb_residual(const KinematicState& x, double goal, Piece* change, int n)
 
 Profile plan_position(const KinematicState& start, double target, double target_velocity,
                       const Limits& limits) noexcept {
+  // The same checks as the three-argument call (its numeric range: a target beyond 1e12 is
+  // 0x4222), and an end velocity 0 or within [1e-100, V] (a subnormal one: 0x4221, as
+  // plan_velocity's target velocity).
   ErrorCode e = detail::check_state(start);
-  if (e == ErrorCode::kNone && !std::isfinite(target)) e = ErrorCode::kPositionNotFinite;
+  if (e == ErrorCode::kNone) e = detail::check_target(target);
   if (e == ErrorCode::kNone) e = detail::check_limits(limits);
   if (e == ErrorCode::kNone) e = detail::check_start_against(start, limits);
   if (e == ErrorCode::kNone && !std::isfinite(target_velocity)) {
     e = ErrorCode::kParameterNotFinite;
   }
-  if (e == ErrorCode::kNone && std::abs(target_velocity) > limits.velocity) {
+  if (e == ErrorCode::kNone && (std::abs(target_velocity) > limits.velocity ||
+                                !detail::velocity_in_range(target_velocity))) {
     e = ErrorCode::kVelocityNotAllowed;
   }
   if (e != ErrorCode::kNone) return Profile::failure(e);

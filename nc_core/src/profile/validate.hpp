@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "nc_core/profile.hpp"
+#include "profile/velocity_change.hpp"
 
 namespace nc::detail {
 
@@ -72,12 +73,36 @@ inline constexpr double kMaxStartRatio = 2e6;
 // continuity by 1e29). 1000 times the position range; the planner suites stay below 5e11.
 inline constexpr double kMaxStopDistance = 1e15;
 
+// The bound at which a start acceleration brought back at J (the planner's first ramp, and the
+// envelope |a0| - J·t a start outside the limits is allowed) meets the path-relative bound that
+// applies there. Mirrored so that a0 > 0: with v0 >= 0 |v| grows, A+; with v0 < 0 the ramp meets
+// A- before v = 0 when a0² + 2J·v0 (a² where v crosses 0) is below A-², else it crosses v = 0 at
+// a = sqrt(a0² + 2J·v0) and meets A+ beyond when that is above A+ (fuzz finding P9: a = 0.695
+// crossed at 0.052 and ended its ramp at A+ = 7.3e-9). A crossing within A+ ends the ramp at
+// v = 0, not at a bound (the larger bound is returned); a crossing above A+ by less than half the
+// walk's rounding tolerance (kDecisionTolerance of a0², velocity_change.hpp) counts as within:
+// the walk lands such a start on A+ exactly at v = 0.
+inline double ramp_end_bound(const KinematicState& s, const Limits& l) noexcept {
+  const double a0 = std::abs(s.a);
+  const double v0 = s.a < 0.0 ? -s.v : s.v;
+  const double ap = l.acceleration;
+  const double am = l.deceleration;
+  if (v0 >= 0.0) return ap;
+  const double k = a0 * a0 + 2.0 * l.jerk * v0;
+  if (k < am * am) return am;
+  const double k_tol = 0.5 * kDecisionTolerance * (ap * ap + a0 * a0 - 2.0 * l.jerk * v0);
+  if (k - ap * ap > k_tol) return ap;
+  return std::max(ap, am);
+}
+
 // A start too far outside `l` (both already in range), or too fast to stop within
-// kMaxStopDistance: kStartFarOutsideLimits.
+// kMaxStopDistance: kStartFarOutsideLimits. The acceleration counts against the bound where its
+// ramp ends (ramp_end_bound): the profile's a there keeps a few ulp of |a0|, which must stay
+// within the planner's 1e-9 of that bound (P8, P9).
 inline ErrorCode check_start_against(const KinematicState& s, const Limits& l) noexcept {
   const double forced = std::abs(s.v + s.a * std::abs(s.a) / (2.0 * l.jerk));
   const double speed = std::max(std::abs(s.v), forced);
-  if (!(std::abs(s.a) <= kMaxStartRatio * std::max(l.acceleration, l.deceleration)) ||
+  if (!(std::abs(s.a) <= kMaxStartRatio * ramp_end_bound(s, l)) ||
       !(speed <= kMaxStartRatio * l.velocity) ||
       !(speed * speed <= 2.0 * l.deceleration * kMaxStopDistance)) {
     return ErrorCode::kStartFarOutsideLimits;
