@@ -307,6 +307,15 @@ TEST_CASE("a start acceleration 1e8 times the bound its ramp ends at is refused"
   check_refused(nc::plan_position(p9, 0.00047679222188957981, -1e-3, l),
                 ErrorCode::kStartFarOutsideLimits);
 
+  // The same from within A- (the second input of P9, seed 1702): a = -0.699 below A- = 0.79
+  // still crosses v = 0 at a = -0.022, 3e6 times A+, and ends its ramp at A+.
+  const Limits within{9074.0000000791624, 7.2752683738651311e-09, 0.78884840011055968,
+                      2.0308818817138672};
+  check_refused(
+      nc::plan_position({1.061823625420268e-313, 0.12012095731847509, -0.69888269381952017},
+                        0.00047631558754869519, within),
+      ErrorCode::kStartFarOutsideLimits);
+
   profile_checks::StartRelief relief;
   relief.over_acceleration = true;
   // The same crossing with A+ = 1.9e6 / ... : a ramp ending at A+ 1.9e6 times below |a0| is

@@ -168,7 +168,16 @@ Profile plan_position(const KinematicState& start, double target, double target_
           break;
         }
         // Regula falsi with the Illinois weighting; a bisection every 8th step bounds the count.
+        // The first point follows the power law E - E(0) ~ tau^n the piece typically has (2 on
+        // a hold, 4 on a jerk piece, as in position.cpp): on a long piece whose far end lies
+        // decades beyond the goal, the secant point crawls from the near end and 200 steps did
+        // not reach the root (fuzz finding P14: a hold at A+ = 7.6e-6 towards V = 1000 lasts
+        // 1.3e8 s, the root lay at 0.051 s, the search stopped at 3.93 s).
         double x = lo + (hi - lo) * (w_lo / (w_lo - w_hi));
+        if (iter == 0) {
+          const double q = std::sqrt(std::clamp(r_lo / (r_lo - r_hi), 0.0, 1.0));
+          x = hi * (jerk == 0.0 ? q : std::sqrt(q));
+        }
         if (!(x > lo && x < hi) || iter % 8 == 7) x = 0.5 * (lo + hi);
         const double fx = f(x);
         if (std::isnan(fx)) return Profile::failure(ErrorCode::kPlannerNoSolution);
@@ -186,11 +195,30 @@ Profile plan_position(const KinematicState& start, double target, double target_
           side = 1;
         }
       }
-      const KinematicState x = detail::advance(s, jerk, tau);
-      push[i] = Piece{tau, jerk, x.a, NAN};
+      KinematicState x = detail::advance(s, jerk, tau);
       n_change = detail::velocity_change(x.v, x.a, ve, bounds, change);
       if (n_change < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
-      absorb_residual(x, goal, change, n_change);
+      if (!absorb_residual(x, goal, change, n_change) && ve > 0.0) {
+        // E(tau) jumps where the change's rounding tolerance takes a state just past the final
+        // curve as on it (fuzz findings P10, P12): an overshoot of ve of that size costs a dip
+        // of a whose time, at ve, is far more distance than the positions' rounding (with a
+        // small A-: v·tol_v / A-). A root inside the jump lands short of the goal from its lower
+        // end and holds ve for the rest (the same distance as the dip to within the overshoot's
+        // share, about 1e-13 of the time).
+        double r = x.p + detail::pieces_distance(x.v, x.a, change, n_change) - goal;
+        const double r_tol = 1e-12 * (std::abs(goal) + std::abs(r + goal));
+        if (r > r_tol && tau != lo) {
+          tau = lo;
+          x = detail::advance(s, jerk, tau);
+          n_change = detail::velocity_change(x.v, x.a, ve, bounds, change);
+          if (n_change < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
+          r = x.p + detail::pieces_distance(x.v, x.a, change, n_change) - goal;
+        }
+        if (r < -r_tol && n_change < detail::kMaxChangePieces) {
+          change[n_change++] = Piece{-r / ve, 0.0, 0.0, ve};
+        }
+      }
+      push[i] = Piece{tau, jerk, x.a, NAN};
       return finish_moving(start, target, v_end, dir, push, i + 1, 0.0, change, n_change);
     }
     s = next;

@@ -75,10 +75,11 @@ inline constexpr double kMaxStopDistance = 1e15;
 
 // The bound at which a start acceleration brought back at J (the planner's first ramp, and the
 // envelope |a0| - J·t a start outside the limits is allowed) meets the path-relative bound that
-// applies there. Mirrored so that a0 > 0: with v0 >= 0 |v| grows, A+; with v0 < 0 the ramp meets
-// A- before v = 0 when a0² + 2J·v0 (a² where v crosses 0) is below A-², else it crosses v = 0 at
-// a = sqrt(a0² + 2J·v0) and meets A+ beyond when that is above A+ (fuzz finding P9: a = 0.695
-// crossed at 0.052 and ended its ramp at A+ = 7.3e-9). A crossing within A+ ends the ramp at
+// applies there. Mirrored so that a0 > 0: with v0 >= 0 |v| grows, A+; with v0 < 0 a ramp from
+// above A- meets A- before v = 0 when a0² + 2J·v0 (a² where v crosses 0) is below A-²; otherwise
+// (also from within A-) it crosses v = 0 at a = sqrt(a0² + 2J·v0) and meets A+ beyond when that
+// is above A+ (fuzz finding P9: a = 0.695 crossed at 0.052 and ended its ramp at A+ = 7.3e-9;
+// the same from a = 0.699 within A- = 0.79). A crossing within A+ ends the ramp at
 // v = 0, not at a bound (the larger bound is returned); a crossing above A+ by less than half the
 // walk's rounding tolerance (kDecisionTolerance of a0², velocity_change.hpp) counts as within:
 // the walk lands such a start on A+ exactly at v = 0.
@@ -89,7 +90,7 @@ inline double ramp_end_bound(const KinematicState& s, const Limits& l) noexcept 
   const double am = l.deceleration;
   if (v0 >= 0.0) return ap;
   const double k = a0 * a0 + 2.0 * l.jerk * v0;
-  if (k < am * am) return am;
+  if (a0 > am && k < am * am) return am;
   const double k_tol = 0.5 * kDecisionTolerance * (ap * ap + a0 * a0 - 2.0 * l.jerk * v0);
   if (k - ap * ap > k_tol) return ap;
   return std::max(ap, am);
