@@ -316,6 +316,14 @@ TEST_CASE("a start acceleration 1e8 times the bound its ramp ends at is refused"
                         0.00047631558754869519, within),
       ErrorCode::kStartFarOutsideLimits);
 
+  // And from above a smaller A- = 0.125 (seed 1721): a position profile that pushes the other
+  // way ramps through A- without holding it, crosses v = 0 at a = -0.053 and ends at A+.
+  const Limits passed{31.24609375, 7.2750489972109146e-09, 0.12460704083719688, 2.0004863739013672};
+  check_refused(
+      nc::plan_position({8.2572993763189198e-317, 0.12012095731847426, -0.69521963456097768},
+                        0.00047679227918706601, passed),
+      ErrorCode::kStartFarOutsideLimits);
+
   profile_checks::StartRelief relief;
   relief.over_acceleration = true;
   // The same crossing with A+ = 1.9e6 / ... : a ramp ending at A+ 1.9e6 times below |a0| is

@@ -28,6 +28,8 @@ using detail::Bounds;
 using detail::Piece;
 
 constexpr double kRootTolerance = 1e-13;
+// Points of the bounded scan for a first switch inside a push piece that slows the motion.
+constexpr int kScanPoints = 16;
 
 // Closes on (target, v_end, 0), holding v_end past the end (profile/finish.hpp).
 Profile finish_moving(const KinematicState& start, double target, double v_end, double dir,
@@ -148,18 +150,40 @@ Profile plan_position(const KinematicState& start, double target, double target_
   for (int i = 0; i < n_push; ++i) {
     const KinematicState next = detail::advance(s, push[i]);
     const double e_next = next.p + change_distance(next.v, next.a, ve, bounds);
-    if (!(e_next < goal)) {
-      if (std::isnan(e_next)) return Profile::failure(ErrorCode::kPlannerNoSolution);
-      // The switch from push to change lies in this piece: E(tau) - goal changes sign on it.
-      const double jerk = push[i].j;
-      auto f = [&](double tau) {
-        const KinematicState x = detail::advance(s, jerk, tau);
-        const double d = change_distance(x.v, x.a, ve, bounds);
-        return x.p + d - goal;
-      };
-      double lo = 0.0, hi = push[i].t;
-      double r_lo = e_here - goal, r_hi = e_next - goal;  // the residuals at the bracket's ends
-      double w_lo = r_lo, w_hi = r_hi;                    // their Illinois weights
+    if (std::isnan(e_next)) return Profile::failure(ErrorCode::kPlannerNoSolution);
+    const double jerk = push[i].j;
+    auto f = [&](double tau) {
+      const KinematicState x = detail::advance(s, jerk, tau);
+      const double d = change_distance(x.v, x.a, ve, bounds);
+      return x.p + d - goal;
+    };
+    double lo = 0.0, hi = push[i].t;
+    double r_lo = e_here - goal, r_hi = e_next - goal;  // the residuals at the bracket's ends
+    bool found = r_hi >= 0.0;
+    if (!found && s.a < 0.0) {
+      // A piece that still brings back a start acceleration against the push (a < 0 here)
+      // slows the motion down: E(tau) may rise above the goal and fall back below it within the
+      // piece (issue 14 item 1, the Bellman suite's seed 3: from v = -V with a = 4.8 against
+      // J = 3.3, E rose 0.013 above the goal and fell back; the later root gave a profile 1.7
+      // times the optimum). The first crossing is the optimal switch: a bounded scan of the
+      // piece finds it.
+      for (int k = 1; k < kScanPoints && !found; ++k) {
+        const double t_k = push[i].t * (static_cast<double>(k) / kScanPoints);
+        const double r_k = f(t_k);
+        if (std::isnan(r_k)) return Profile::failure(ErrorCode::kPlannerNoSolution);
+        if (r_k >= 0.0) {
+          hi = t_k;
+          r_hi = r_k;
+          found = true;
+        } else {
+          lo = t_k;
+          r_lo = r_k;
+        }
+      }
+    }
+    if (found) {
+      // The switch from push to change lies in [lo, hi]: E(tau) - goal changes sign on it.
+      double w_lo = r_lo, w_hi = r_hi;  // the Illinois weights of the bracket's ends
       double tau = hi;
       int side = 0;
       for (int iter = 0; iter < 200; ++iter) {
@@ -174,7 +198,7 @@ Profile plan_position(const KinematicState& start, double target, double target_
         // not reach the root (fuzz finding P14: a hold at A+ = 7.6e-6 towards V = 1000 lasts
         // 1.3e8 s, the root lay at 0.051 s, the search stopped at 3.93 s).
         double x = lo + (hi - lo) * (w_lo / (w_lo - w_hi));
-        if (iter == 0) {
+        if (iter == 0 && lo == 0.0) {
           const double q = std::sqrt(std::clamp(r_lo / (r_lo - r_hi), 0.0, 1.0));
           x = hi * (jerk == 0.0 ? q : std::sqrt(q));
         }

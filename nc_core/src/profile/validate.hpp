@@ -74,15 +74,15 @@ inline constexpr double kMaxStartRatio = 2e6;
 inline constexpr double kMaxStopDistance = 1e15;
 
 // The bound at which a start acceleration brought back at J (the planner's first ramp, and the
-// envelope |a0| - J·t a start outside the limits is allowed) meets the path-relative bound that
-// applies there. Mirrored so that a0 > 0: with v0 >= 0 |v| grows, A+; with v0 < 0 a ramp from
-// above A- meets A- before v = 0 when a0² + 2J·v0 (a² where v crosses 0) is below A-²; otherwise
-// (also from within A-) it crosses v = 0 at a = sqrt(a0² + 2J·v0) and meets A+ beyond when that
-// is above A+ (fuzz finding P9: a = 0.695 crossed at 0.052 and ended its ramp at A+ = 7.3e-9;
-// the same from a = 0.699 within A- = 0.79). A crossing within A+ ends the ramp at
-// v = 0, not at a bound (the larger bound is returned); a crossing above A+ by less than half the
-// walk's rounding tolerance (kDecisionTolerance of a0², velocity_change.hpp) counts as within:
-// the walk lands such a start on A+ exactly at v = 0.
+// envelope |a0| - J·t a start outside the limits is allowed) can end. Mirrored so that a0 > 0:
+// with v0 >= 0 |v| grows, A+. With v0 < 0 the ramp crosses v = 0 at a = sqrt(a0² + 2J·v0) when
+// that is real; a crossing above A+ goes on to A+ beyond it (fuzz finding P9: a = 0.695 crossed
+// at 0.052 and ended its ramp at A+ = 7.3e-9; the same from within A- = 0.79, and from above a
+// smaller A- that the ramp passed without holding). Otherwise a ramp from above A- ends at A-
+// when it meets A- before v = 0 (a0² + 2J·v0 below A-²); a crossing within A+ ends it at v = 0,
+// not at a bound (the larger bound is returned). A crossing above A+ by less than half the walk's
+// rounding tolerance (kDecisionTolerance of a0², velocity_change.hpp) counts as within: the walk
+// lands such a start on A+ exactly at v = 0.
 inline double ramp_end_bound(const KinematicState& s, const Limits& l) noexcept {
   const double a0 = std::abs(s.a);
   const double v0 = s.a < 0.0 ? -s.v : s.v;
@@ -90,9 +90,9 @@ inline double ramp_end_bound(const KinematicState& s, const Limits& l) noexcept 
   const double am = l.deceleration;
   if (v0 >= 0.0) return ap;
   const double k = a0 * a0 + 2.0 * l.jerk * v0;
-  if (a0 > am && k < am * am) return am;
   const double k_tol = 0.5 * kDecisionTolerance * (ap * ap + a0 * a0 - 2.0 * l.jerk * v0);
   if (k - ap * ap > k_tol) return ap;
+  if (a0 > am && k < am * am) return am;
   return std::max(ap, am);
 }
 
