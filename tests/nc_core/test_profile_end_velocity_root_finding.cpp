@@ -1,8 +1,11 @@
 // plan_position with an end velocity where its switch point is hard to find (fuzz findings P10,
 // P12, P14; docs/reliability.md): the root of E(tau) = target inside a jump that the velocity
-// change's rounding tolerance makes, and a root far below the end of a very long push piece.
+// change's rounding tolerance makes, a root far below the end of a very long push piece, and the
+// first of two crossings inside one push piece (issue 14 item 1, Bellman consistency).
 // Each profile keeps the planner tests' contract (profile_checks.hpp), with the numbers found.
 #include <catch2/catch.hpp>
+
+#include <cmath>
 
 #include "nc_core/profile.hpp"
 #include "profile_checks.hpp"
@@ -85,4 +88,26 @@ TEST_CASE("a root far below the end of a very long push piece is found",
   REQUIRE(rest.ok());
   CHECK(prof.duration() == Approx(rest.duration()).epsilon(1e-9));
   CHECK(prof.duration() == Approx(0.051009498038301328).epsilon(1e-12));
+}
+
+TEST_CASE("the first switch inside a push piece that slows the motion is taken",
+          "[profile][end_velocity]") {
+  // Issue 14 item 1, the Bellman suite's seed 3: from v = -V = -3.29 with a = 4.8 to 0.072 mm
+  // at 2.03 mm/s, J = 3.3. Along the push's first piece (which still brings a back) E(tau) rose
+  // above the target and fell back below it, and the switch was taken at a later crossing: the
+  // profile took 3.741 s, while re-planning from its state at 0.88 s reached the target in
+  // 1.316 s. The first crossing gives 2.089 s, and re-planning from any sampled state gives the
+  // rest of it.
+  const Limits l{3.2898764527582767, 6546.635221418459, 20454.983581909062, 3.3288370245999088};
+  const KinematicState s{0.0, -3.2898764527582767, 4.7973199386656624};
+  const double target = 0.071945387924975804;
+  const double v_end = 2.033291143442896;
+  const Profile prof = planned(s, target, v_end, l);
+  CHECK(prof.duration() == Approx(2.0892070007501911).epsilon(1e-9));
+  for (double t : {0.3, 0.88, 1.2, 1.9}) {
+    INFO("re-planned at t = " << t);
+    const Profile rest = nc::plan_position(prof.at(t), target, v_end, l);
+    REQUIRE(rest.ok());
+    CHECK(std::abs(rest.duration() - (prof.duration() - t)) <= 1e-7 * prof.duration());
+  }
 }

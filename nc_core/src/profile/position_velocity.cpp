@@ -29,7 +29,7 @@ using detail::Piece;
 
 constexpr double kRootTolerance = 1e-13;
 // Points of the bounded scan for a first switch inside a push piece that slows the motion.
-constexpr int kScanPoints = 16;
+constexpr int kScanPoints = 4;
 
 // Closes on (target, v_end, 0), holding v_end past the end (profile/finish.hpp).
 Profile finish_moving(const KinematicState& start, double target, double v_end, double dir,
@@ -166,7 +166,7 @@ Profile plan_position(const KinematicState& start, double target, double target_
       // piece (issue 14 item 1, the Bellman suite's seed 3: from v = -V with a = 4.8 against
       // J = 3.3, E rose 0.013 above the goal and fell back; the later root gave a profile 1.7
       // times the optimum). The first crossing is the optimal switch: a bounded scan of the
-      // piece finds it.
+      // piece (3 inner points; 15 cost 20 % of the planning time of the passing class) finds it.
       for (int k = 1; k < kScanPoints && !found; ++k) {
         const double t_k = push[i].t * (static_cast<double>(k) / kScanPoints);
         const double r_k = f(t_k);
