@@ -41,6 +41,18 @@ void check_velocity_planned(const KinematicState& s, double v1, const Limits& l,
   CHECK(profile_checks::check_velocity_profile(prof, s, v1, l, {}, relief).ok());
 }
 
+// plan_position from `s` refused as a start too far outside `l` (0x4F70).
+void check_far_start_refused(const KinematicState& s, double target, const Limits& l) {
+  check_refused(nc::plan_position(s, target, l), ErrorCode::kStartFarOutsideLimits);
+}
+
+// The checks' relief for a start acceleration outside the limits.
+profile_checks::StartRelief acceleration_relief() {
+  profile_checks::StartRelief r;
+  r.over_acceleration = true;
+  return r;
+}
+
 Limits with_field(Limits l, int field, double value) {
   (field == 0   ? l.velocity
    : field == 1 ? l.acceleration
@@ -309,25 +321,18 @@ TEST_CASE("a start acceleration 1e8 times the bound its ramp ends at is refused"
 
   // The same from within A- (the second input of P9, seed 1702): a = -0.699 below A- = 0.79
   // still crosses v = 0 at a = -0.022, 3e6 times A+, and ends its ramp at A+.
-  const Limits within{9074.0000000791624, 7.2752683738651311e-09, 0.78884840011055968,
-                      2.0308818817138672};
-  check_refused(
-      nc::plan_position({1.061823625420268e-313, 0.12012095731847509, -0.69888269381952017},
-                        0.00047631558754869519, within),
-      ErrorCode::kStartFarOutsideLimits);
-
+  check_far_start_refused(
+      {1.061823625420268e-313, 0.12012095731847509, -0.69888269381952017}, 0.00047631558754869519,
+      {9074.0000000791624, 7.2752683738651311e-09, 0.78884840011055968, 2.0308818817138672});
   // And from above a smaller A- = 0.125 (seed 1721): a position profile that pushes the other
   // way ramps through A- without holding it, crosses v = 0 at a = -0.053 and ends at A+.
-  const Limits passed{31.24609375, 7.2750489972109146e-09, 0.12460704083719688, 2.0004863739013672};
-  check_refused(
-      nc::plan_position({8.2572993763189198e-317, 0.12012095731847426, -0.69521963456097768},
-                        0.00047679227918706601, passed),
-      ErrorCode::kStartFarOutsideLimits);
+  check_far_start_refused(
+      {8.2572993763189198e-317, 0.12012095731847426, -0.69521963456097768}, 0.00047679227918706601,
+      {31.24609375, 7.2750489972109146e-09, 0.12460704083719688, 2.0004863739013672});
 
-  profile_checks::StartRelief relief;
-  relief.over_acceleration = true;
-  // The same crossing with A+ = 1.9e6 / ... : a ramp ending at A+ 1.9e6 times below |a0| is
-  // planned within the contract (a = -0.695, v = 0.12: it crosses v = 0 at a = -0.052).
+  const profile_checks::StartRelief relief = acceleration_relief();
+  // P9's start with A+ = |a0| / 1.9e6: the ramp crossing v = 0 at a = -0.052 and ending at A+
+  // is planned within the contract.
   const double a0 = 0.6952196903821245;
   Limits near = l;
   near.acceleration = a0 / 1.9e6;
@@ -342,7 +347,6 @@ TEST_CASE("a start acceleration 1e8 times the bound its ramp ends at is refused"
   // Growing |v| (v and a of one sign): the ramp ends at A+ from the start; 2.1e6 times A+ with
   // A- 1e5 times larger is refused, 1.9e6 times planned.
   const Limits lopsided{1e5, 1e-3, 100.0, 50.0};
-  check_refused(nc::plan_position({0.0, 1.0, 2.1e3}, 100.0, lopsided),
-                ErrorCode::kStartFarOutsideLimits);
+  check_far_start_refused({0.0, 1.0, 2.1e3}, 100.0, lopsided);
   check_position_planned({0.0, 1.0, 1.9e3}, 100.0, lopsided, relief);
 }
