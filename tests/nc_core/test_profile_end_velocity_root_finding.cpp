@@ -1,5 +1,5 @@
 // plan_position with an end velocity where its switch point is hard to find (fuzz findings P10,
-// P12, P14; docs/reliability.md): the root of E(tau) = target inside a jump that the velocity
+// P12, P14, P15; docs/reliability.md): the root of E(tau) = target inside a jump that the velocity
 // change's rounding tolerance makes, a root far below the end of a very long push piece, and the
 // first of two crossings inside one push piece (issue 14 item 1, Bellman consistency).
 // Each profile keeps the planner tests' contract (profile_checks.hpp), with the numbers found.
@@ -110,4 +110,22 @@ TEST_CASE("the first switch inside a push piece that slows the motion is taken",
     REQUIRE(rest.ok());
     CHECK(std::abs(rest.duration() - (prof.duration() - t)) <= 1e-7 * prof.duration());
   }
+}
+
+TEST_CASE("an acceleration left on the final curve within rounding ramps to 0 at J",
+          "[profile][end_velocity]") {
+  // P15 (seed 1771, after 1.3e7 executions): v 2.1e-21 below v_end = 7.04e-9, a = 4e-40,
+  // A+ = 2.06e-6, J = 4.77e-4, the target 1.6e-18 ahead. The push ended at a = 1.1e-13, on the
+  // final curve within the rise's rounding tolerance but below the final ramp's, and the change
+  // from there gave no piece: a jumped from 1.1e-13 to 0 (5e-8 of A+). Now the change ramps it
+  // to 0 at -J (1.16e-10 s) and the profile is a rise and a fall of 1.16e-10 s each.
+  const Limits l{1.8026314529717053e-06, 2.0574137664720906e-06, 7.0418701876165225e-09,
+                 0.00047673244193634565};
+  const Profile prof =
+      planned({6.5715143469463669e-110, 7.041529113169559e-09, 3.9592891430598328e-40},
+              1.6395921293743496e-18, 7.041529113171679e-09, l);
+  REQUIRE(prof.segment_count() == 2);
+  CHECK(prof.segment(1).j == -l.jerk);
+  CHECK(prof.segment(1).duration == Approx(1.1642301714750205e-10).epsilon(1e-9));
+  CHECK(prof.duration() == Approx(2.3284603429500409e-10).epsilon(1e-9));
 }
