@@ -350,3 +350,27 @@ TEST_CASE("a start acceleration 1e8 times the bound its ramp ends at is refused"
   check_far_start_refused({0.0, 1.0, 2.1e3}, 100.0, lopsided);
   check_position_planned({0.0, 1.0, 1.9e3}, 100.0, lopsided, relief);
 }
+
+TEST_CASE("an end velocity whose change needs more than 1e15 is refused with 0x4221",
+          "[profile][range]") {
+  // Fuzz finding P16 (seed 1781): v_end = 8.6e9 with A- = 3.6e-9 needs 1e28 mm to change at A-:
+  // the profile broke continuity by 517 mm at t = 8386 s. Refused, as a start whose braking
+  // distance is above 1e15 (P4).
+  const Limits huge{164752293244.48627, 8589934592.0, 3.6390076368974896e-09, 164758387836.50589};
+  check_refused(
+      nc::plan_position({6.5715143469463669e-110, 3.0515277103438552e-05, 4.6570422518632973e-10},
+                        6.0780413869071933e-86, 8589934592.0, huge),
+      ErrorCode::kVelocityNotAllowed);
+  // At 2000 mm/s: min(A+, A-) = 1.9e-9 needs 1.05e15, refused; with A- = 2.1e-9 (9.5e14) a
+  // target passed at 2000 mm/s is planned within the contract. v_end = 0 is never refused so.
+  const Limits slow{2000.0, 5000.0, 1.9e-9, 50000.0};
+  check_refused(nc::plan_position({0.0, 0.0, 0.0}, 1e6, 2000.0, slow),
+                ErrorCode::kVelocityNotAllowed);
+  check_refused(nc::plan_position({0.0, 0.0, 0.0}, 1e6, -2000.0, slow),
+                ErrorCode::kVelocityNotAllowed);
+  REQUIRE(nc::plan_position({0.0, 0.0, 0.0}, 1e6, slow).ok());
+  const Limits enough{2000.0, 5000.0, 2.1e-9, 50000.0};
+  const Profile prof = nc::plan_position({0.0, 0.0, 0.0}, 1e6, 2000.0, enough);
+  REQUIRE(prof.ok());
+  CHECK(profile_checks::check_passing_profile(prof, {0.0, 0.0, 0.0}, 1e6, 2000.0, enough).ok());
+}

@@ -106,6 +106,7 @@ Profile plan_position(const KinematicState& start, double target, double target_
                                 !detail::velocity_in_range(target_velocity))) {
     e = ErrorCode::kVelocityNotAllowed;
   }
+  if (e == ErrorCode::kNone) e = detail::check_end_velocity(target_velocity, limits);
   if (e != ErrorCode::kNone) return Profile::failure(e);
   if (target_velocity == 0.0) return plan_position(start, target, limits);
 

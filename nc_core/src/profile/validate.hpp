@@ -111,6 +111,19 @@ inline ErrorCode check_start_against(const KinematicState& s, const Limits& l) n
   return ErrorCode::kNone;
 }
 
+// plan_position's end velocity (fuzz finding P16): the distance a change of v_end needs at the
+// smaller acceleration bound, v_end² / 2·min(A+, A-), at most kMaxStopDistance, as the start's
+// braking distance (P4). Beyond, the profile's excursions leave the range where a double keeps
+// its continuity (v_end = 8.6e9 with A- = 3.6e-9: 1e28 mm; continuity broke by 517 mm at 8386 s).
+// Refused as a velocity not allowed (0x4221), the code of |v_end| > V.
+inline ErrorCode check_end_velocity(double v_end, const Limits& l) noexcept {
+  const double bound = std::min(l.acceleration, l.deceleration);
+  if (!(v_end * v_end <= 2.0 * bound * kMaxStopDistance)) {
+    return ErrorCode::kVelocityNotAllowed;
+  }
+  return ErrorCode::kNone;
+}
+
 // A target position: NaN / inf kPositionNotFinite, beyond kMaxMagnitude kTargetPositionNotAllowed.
 inline ErrorCode check_target(double target) noexcept {
   if (!std::isfinite(target)) return ErrorCode::kPositionNotFinite;
