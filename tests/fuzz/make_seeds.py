@@ -157,7 +157,8 @@ BLOCKS = {
 }
 
 PLANNER = {
-    # mode byte: bit 0 velocity planner, bit 1 raw doubles.
+    # mode byte: bit 0 velocity planner, bit 1 raw doubles, bit 7 plan_position with an end
+    # velocity (read after the limits).
     "rest_to_rest": bytes([0]) + num(0) + num(0) + num(0) + num(1000) + num(2000) + num(5000)
     + num(5000) + num(50000),
     "moving_start": bytes([0]) + num(100) + num(1500) + num(-2000) + num(-500) + num(2000)
@@ -168,6 +169,10 @@ PLANNER = {
     + num(5000) + num(50000),
     "raw": bytes([2]) + b"".join(struct.pack(">d", x) for x in
                                  (0.0, 0.0, 0.0, 100.0, 10.0, 100.0, 100.0, 1000.0)),
+    "passing": bytes([0x80]) + num(0) + num(500) + num(0) + num(1000) + num(2000) + num(5000)
+    + num(5000) + num(50000) + num(1500),
+    "run_up_backwards": bytes([0x80]) + num(100) + num(0) + num(0) + num(101) + num(2000)
+    + num(5000) + num(5000) + num(50000) + num(2000),
 }
 
 

@@ -41,6 +41,18 @@ void check_velocity_planned(const KinematicState& s, double v1, const Limits& l,
   CHECK(profile_checks::check_velocity_profile(prof, s, v1, l, {}, relief).ok());
 }
 
+// plan_position from `s` refused as a start too far outside `l` (0x4F70).
+void check_far_start_refused(const KinematicState& s, double target, const Limits& l) {
+  check_refused(nc::plan_position(s, target, l), ErrorCode::kStartFarOutsideLimits);
+}
+
+// The checks' relief for a start acceleration outside the limits.
+profile_checks::StartRelief acceleration_relief() {
+  profile_checks::StartRelief r;
+  r.over_acceleration = true;
+  return r;
+}
+
 Limits with_field(Limits l, int field, double value) {
   (field == 0   ? l.velocity
    : field == 1 ? l.acceleration
@@ -81,7 +93,18 @@ TEST_CASE("a start or target beyond 1e12 is refused with the code of the quantit
     check_refused(nc::plan_velocity({0.0, 0.0, bad}, 0.0, kLimits),
                   ErrorCode::kAccelerationNotAllowed);
     check_refused(nc::plan_stop({0.0, bad, 0.0}, 5000.0, 50000.0), ErrorCode::kVelocityNotAllowed);
+    // The four-argument call checks its target the same way (fuzz finding P11: it took any
+    // finite target).
+    check_refused(nc::plan_position({0.0, 0.0, 0.0}, bad, 100.0, kLimits),
+                  ErrorCode::kTargetPositionNotAllowed);
+    check_refused(nc::plan_position({bad, 0.0, 0.0}, 0.0, -100.0, kLimits),
+                  ErrorCode::kTargetPositionNotAllowed);
   }
+  // 1e12 itself is planned.
+  const Profile edge = nc::plan_position({1e12 - 1000.0, 0.0, 0.0}, 1e12, 100.0, kLimits);
+  REQUIRE(edge.ok());
+  CHECK(profile_checks::check_passing_profile(edge, {1e12 - 1000.0, 0.0, 0.0}, 1e12, 100.0, kLimits)
+            .ok());
 }
 
 TEST_CASE("a subnormal start velocity or acceleration is refused, 1e-100 is planned",
@@ -93,6 +116,16 @@ TEST_CASE("a subnormal start velocity or acceleration is refused, 1e-100 is plan
   check_refused(nc::plan_position({0.0, 0.0, 1.3833838083554903e-322}, 0.0106, small),
                 ErrorCode::kAccelerationNotAllowed);
   check_refused(nc::plan_velocity({0.0, 0.0, 0.0}, 1e-300, small), ErrorCode::kVelocityNotAllowed);
+  // An end velocity of plan_position's four-argument call, as plan_velocity's target (fuzz
+  // finding P11): subnormal or below 1e-100 refused, 1e-100 planned.
+  for (double bad : {4.9406564584124654e-324, -2.2e-308, 1e-300}) {
+    INFO("end velocity " << bad);
+    check_refused(nc::plan_position({0.0, 0.0, 0.0}, 0.0106, bad, small),
+                  ErrorCode::kVelocityNotAllowed);
+  }
+  const Profile slow = nc::plan_position({0.0, 0.0, 0.0}, 0.0106, -1e-100, small);
+  REQUIRE(slow.ok());
+  CHECK(profile_checks::check_passing_profile(slow, {0.0, 0.0, 0.0}, 0.0106, -1e-100, small).ok());
   const KinematicState tiny{0.0, 1e-100, -1e-100};
   const Profile prof = nc::plan_position(tiny, 0.0106, small);
   REQUIRE(prof.ok());
@@ -269,4 +302,75 @@ TEST_CASE("a start acceleration 1e8 times A is refused: its rounding would pass 
   profile_checks::StartRelief relief;
   relief.over_acceleration = true;
   check_velocity_planned({0.0, 0.0, -1.9e6 * 7.2750489832789158e-09}, 0.0, l, relief);
+}
+
+TEST_CASE("a start acceleration 1e8 times the bound its ramp ends at is refused",
+          "[profile][range]") {
+  // Fuzz finding P9: v = 0.12, a = -0.695 with A+ = 7.3e-9, A- = 4.6e-4, J = 2: 1.5e3 times
+  // max(A+, A-), inside P8's bound. The ramp of a back at J crosses v = 0 at a = -0.052 and ends
+  // at A+ (|v| grows again): a = -A+ - 1.3e-16 there, a few ulp of 0.695 and 1.8e-8 of A+. The
+  // start counts against the bound its ramp ends at: 9.5e7 times A+, refused.
+  const Limits l{9074.0000000791624, 7.2752683738651311e-09, 0.00046147382817898422,
+                 2.0004863739013672};
+  const KinematicState p9{8.2572993763189198e-317, 0.12012095731847509, -0.6952196903821245};
+  check_refused(nc::plan_position(p9, 0.00047679222188957981, l),
+                ErrorCode::kStartFarOutsideLimits);
+  check_refused(nc::plan_velocity(p9, 0.0, l), ErrorCode::kStartFarOutsideLimits);
+  check_refused(nc::plan_position(p9, 0.00047679222188957981, -1e-3, l),
+                ErrorCode::kStartFarOutsideLimits);
+
+  // The same from within A- (the second input of P9, seed 1702): a = -0.699 below A- = 0.79
+  // still crosses v = 0 at a = -0.022, 3e6 times A+, and ends its ramp at A+.
+  check_far_start_refused(
+      {1.061823625420268e-313, 0.12012095731847509, -0.69888269381952017}, 0.00047631558754869519,
+      {9074.0000000791624, 7.2752683738651311e-09, 0.78884840011055968, 2.0308818817138672});
+  // And from above a smaller A- = 0.125 (seed 1721): a position profile that pushes the other
+  // way ramps through A- without holding it, crosses v = 0 at a = -0.053 and ends at A+.
+  check_far_start_refused(
+      {8.2572993763189198e-317, 0.12012095731847426, -0.69521963456097768}, 0.00047679227918706601,
+      {31.24609375, 7.2750489972109146e-09, 0.12460704083719688, 2.0004863739013672});
+
+  const profile_checks::StartRelief relief = acceleration_relief();
+  // P9's start with A+ = |a0| / 1.9e6: the ramp crossing v = 0 at a = -0.052 and ending at A+
+  // is planned within the contract.
+  const double a0 = 0.6952196903821245;
+  Limits near = l;
+  near.acceleration = a0 / 1.9e6;
+  check_position_planned({0.0, 0.12012095731847509, -a0}, 1e-3, near, relief);
+  check_velocity_planned({0.0, 0.12012095731847509, -a0}, 0.0, near, relief);
+  // The ramp meets A- before v = 0 (a0² + 2J·v0 < A-²): it counts against A- = 4.6e-4, 1.5e3
+  // times, and is planned although it lies 9.5e7 times above A+.
+  const KinematicState before_zero{0.0, 0.2, -a0};
+  CHECK(a0 * a0 - 2.0 * l.jerk * 0.2 < l.deceleration * l.deceleration);
+  check_position_planned(before_zero, 1.0, l, relief);
+  check_velocity_planned(before_zero, 0.0, l, relief);
+  // Growing |v| (v and a of one sign): the ramp ends at A+ from the start; 2.1e6 times A+ with
+  // A- 1e5 times larger is refused, 1.9e6 times planned.
+  const Limits lopsided{1e5, 1e-3, 100.0, 50.0};
+  check_far_start_refused({0.0, 1.0, 2.1e3}, 100.0, lopsided);
+  check_position_planned({0.0, 1.0, 1.9e3}, 100.0, lopsided, relief);
+}
+
+TEST_CASE("an end velocity whose change needs more than 1e15 is refused with 0x4221",
+          "[profile][range]") {
+  // Fuzz finding P16 (seed 1781): v_end = 8.6e9 with A- = 3.6e-9 needs 1e28 mm to change at A-:
+  // the profile broke continuity by 517 mm at t = 8386 s. Refused, as a start whose braking
+  // distance is above 1e15 (P4).
+  const Limits huge{164752293244.48627, 8589934592.0, 3.6390076368974896e-09, 164758387836.50589};
+  check_refused(
+      nc::plan_position({6.5715143469463669e-110, 3.0515277103438552e-05, 4.6570422518632973e-10},
+                        6.0780413869071933e-86, 8589934592.0, huge),
+      ErrorCode::kVelocityNotAllowed);
+  // At 2000 mm/s: min(A+, A-) = 1.9e-9 needs 1.05e15, refused; with A- = 2.1e-9 (9.5e14) a
+  // target passed at 2000 mm/s is planned within the contract. v_end = 0 is never refused so.
+  const Limits slow{2000.0, 5000.0, 1.9e-9, 50000.0};
+  check_refused(nc::plan_position({0.0, 0.0, 0.0}, 1e6, 2000.0, slow),
+                ErrorCode::kVelocityNotAllowed);
+  check_refused(nc::plan_position({0.0, 0.0, 0.0}, 1e6, -2000.0, slow),
+                ErrorCode::kVelocityNotAllowed);
+  REQUIRE(nc::plan_position({0.0, 0.0, 0.0}, 1e6, slow).ok());
+  const Limits enough{2000.0, 5000.0, 2.1e-9, 50000.0};
+  const Profile prof = nc::plan_position({0.0, 0.0, 0.0}, 1e6, 2000.0, enough);
+  REQUIRE(prof.ok());
+  CHECK(profile_checks::check_passing_profile(prof, {0.0, 0.0, 0.0}, 1e6, 2000.0, enough).ok());
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "nc_core/profile.hpp"
+#include "profile/velocity_change.hpp"
 
 namespace nc::detail {
 
@@ -72,15 +73,53 @@ inline constexpr double kMaxStartRatio = 2e6;
 // continuity by 1e29). 1000 times the position range; the planner suites stay below 5e11.
 inline constexpr double kMaxStopDistance = 1e15;
 
+// The bound at which a start acceleration brought back at J (the planner's first ramp, and the
+// envelope |a0| - J·t a start outside the limits is allowed) can end. Mirrored so that a0 > 0:
+// with v0 >= 0 |v| grows, A+. With v0 < 0 the ramp crosses v = 0 at a = sqrt(a0² + 2J·v0) when
+// that is real; a crossing above A+ goes on to A+ beyond it (fuzz finding P9: a = 0.695 crossed
+// at 0.052 and ended its ramp at A+ = 7.3e-9; the same from within A- = 0.79, and from above a
+// smaller A- that the ramp passed without holding). Otherwise a ramp from above A- ends at A-
+// when it meets A- before v = 0 (a0² + 2J·v0 below A-²); a crossing within A+ ends it at v = 0,
+// not at a bound (the larger bound is returned). A crossing above A+ by less than half the walk's
+// rounding tolerance (kDecisionTolerance of a0², velocity_change.hpp) counts as within: the walk
+// lands such a start on A+ exactly at v = 0.
+inline double ramp_end_bound(const KinematicState& s, const Limits& l) noexcept {
+  const double a0 = std::abs(s.a);
+  const double v0 = s.a < 0.0 ? -s.v : s.v;
+  const double ap = l.acceleration;
+  const double am = l.deceleration;
+  if (v0 >= 0.0) return ap;
+  const double k = a0 * a0 + 2.0 * l.jerk * v0;
+  const double k_tol = 0.5 * kDecisionTolerance * (ap * ap + a0 * a0 - 2.0 * l.jerk * v0);
+  if (k - ap * ap > k_tol) return ap;
+  if (a0 > am && k < am * am) return am;
+  return std::max(ap, am);
+}
+
 // A start too far outside `l` (both already in range), or too fast to stop within
-// kMaxStopDistance: kStartFarOutsideLimits.
+// kMaxStopDistance: kStartFarOutsideLimits. The acceleration counts against the bound where its
+// ramp ends (ramp_end_bound): the profile's a there keeps a few ulp of |a0|, which must stay
+// within the planner's 1e-9 of that bound (P8, P9).
 inline ErrorCode check_start_against(const KinematicState& s, const Limits& l) noexcept {
   const double forced = std::abs(s.v + s.a * std::abs(s.a) / (2.0 * l.jerk));
   const double speed = std::max(std::abs(s.v), forced);
-  if (!(std::abs(s.a) <= kMaxStartRatio * std::max(l.acceleration, l.deceleration)) ||
+  if (!(std::abs(s.a) <= kMaxStartRatio * ramp_end_bound(s, l)) ||
       !(speed <= kMaxStartRatio * l.velocity) ||
       !(speed * speed <= 2.0 * l.deceleration * kMaxStopDistance)) {
     return ErrorCode::kStartFarOutsideLimits;
+  }
+  return ErrorCode::kNone;
+}
+
+// plan_position's end velocity (fuzz finding P16): the distance a change of v_end needs at the
+// smaller acceleration bound, v_end² / 2·min(A+, A-), at most kMaxStopDistance, as the start's
+// braking distance (P4). Beyond, the profile's excursions leave the range where a double keeps
+// its continuity (v_end = 8.6e9 with A- = 3.6e-9: 1e28 mm; continuity broke by 517 mm at 8386 s).
+// Refused as a velocity not allowed (0x4221), the code of |v_end| > V.
+inline ErrorCode check_end_velocity(double v_end, const Limits& l) noexcept {
+  const double bound = std::min(l.acceleration, l.deceleration);
+  if (!(v_end * v_end <= 2.0 * bound * kMaxStopDistance)) {
+    return ErrorCode::kVelocityNotAllowed;
   }
   return ErrorCode::kNone;
 }

@@ -141,8 +141,14 @@ int upward(double v, double a, double v1, const Bounds& b, double sign, Sink& ou
     }
     if (t_curve <= t_cap) {
       if (!(a_meet > 0.0)) {
-        // Meets the final curve at a = 0: that is the end velocity itself.
-        put(t_curve, jerk, 0.0, v1, true);
+        // Meets the final curve at a = 0: that is the end velocity itself. A positive a left
+        // there (on the curve within rounding, but below the final ramp's own tolerance) still
+        // ramps to 0 at J (fuzz finding P15: a = 1.1e-13 against A+ = 2e-6 was dropped).
+        if (a > 0.0) {
+          put(a / jerk, -jerk, 0.0, v1, true);
+        } else {
+          put(t_curve, jerk, 0.0, v1, true);
+        }
         return n;
       }
       put(t_curve, jerk, a_meet, vk - a_meet * a_meet / (2.0 * jerk), false);

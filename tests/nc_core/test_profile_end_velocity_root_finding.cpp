@@ -1,0 +1,131 @@
+// plan_position with an end velocity where its switch point is hard to find (fuzz findings P10,
+// P12, P14, P15; docs/reliability.md): the root of E(tau) = target inside a jump that the velocity
+// change's rounding tolerance makes, a root far below the end of a very long push piece, and the
+// first of two crossings inside one push piece (issue 14 item 1, Bellman consistency).
+// Each profile keeps the planner tests' contract (profile_checks.hpp), with the numbers found.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "nc_core/profile.hpp"
+#include "profile_checks.hpp"
+
+namespace {
+
+using nc::KinematicState;
+using nc::Limits;
+using nc::Profile;
+
+Profile planned(const KinematicState& s, double target, double v_end, const Limits& l) {
+  const Profile prof = nc::plan_position(s, target, v_end, l);
+  REQUIRE(prof.ok());
+  profile_checks::StartRelief relief;
+  relief.over_acceleration = true;
+  const profile_checks::Finding f =
+      profile_checks::check_passing_profile(prof, s, target, v_end, l, {}, relief);
+  INFO(profile_checks::to_string(f));
+  CHECK(f.ok());
+  return prof;
+}
+
+// The last segment: a hold at v_end (a = 0, j = 0) of `duration`.
+void check_ends_with_hold(const Profile& prof, double v_end, double duration) {
+  REQUIRE(prof.segment_count() > 0);
+  const nc::Segment& last = prof.segment(prof.segment_count() - 1);
+  CHECK(last.j == 0.0);
+  CHECK(last.a == 0.0);
+  CHECK(last.v == Approx(v_end).epsilon(1e-12));
+  CHECK(last.duration == Approx(duration).epsilon(1e-6));
+}
+
+}  // namespace
+
+TEST_CASE("a target just past where the direct change ends holds v_end for the rest",
+          "[profile][end_velocity]") {
+  // P10 (seed 1701): from rest with a = -4.6e-6 to 0.0106 mm at 0.0106 mm/s, A- = J = 0.0106.
+  // The target lies 1.3e-8 past the end of the direct change; the change snaps an overshoot of
+  // the final curve within its tolerance to the curve, so E(tau) jumps by 1.3e-8 there and the
+  // switch broke continuity by 1.3e-8 (the checks allow 1e-9). Now: the change from the lower
+  // end of the jump, then 4.7e-8 s at v_end.
+  const Limits l{0.010841535057602809, 0.065687037460898767, 0.010588235294117647,
+                 0.010588235294117647};
+  const Profile prof =
+      planned({0.0, 0.0, -4.5777065690089267e-06}, 0.010588235294117647, 0.010588235294117647, l);
+  check_ends_with_hold(prof, 0.010588235294117647, 4.6756511230276898e-08);
+  CHECK(prof.duration() == Approx(2.0004324791683437).epsilon(1e-12));
+}
+
+TEST_CASE("with a tiny A- an overshoot of rounding size is no switch point: v_end is held",
+          "[profile][end_velocity]") {
+  // P12 (seed 1703): from v = 500 to 1000 mm at 2876 mm/s, A+ 5000, A- 6.1e-6. Past the point
+  // where the push meets the final curve, an overshoot of v_end by dv costs a hold at A- of
+  // 2876 · dv / 6.1e-6 mm: the 3e-10 mm/s the change takes as rounding is 137 mm of E(tau), and
+  // the root (30 mm past the direct change) lay inside that jump: continuity broke by 29.8 mm.
+  // Now the push ends at the curve and 0.01035 s at v_end cover the 29.8 mm.
+  const Limits l{200000.0, 5000.076295109483, 6.1036087586785692e-06, 50212.863355458911};
+  const Profile prof = planned({0.0, 500.00762951094833, 0.0}, 1000.0, 2876.0204470893414, l);
+  check_ends_with_hold(prof, 2876.0204470893414, 0.010352937220367238);
+  CHECK(prof.duration() == Approx(0.58512584719202976).epsilon(1e-12));
+  // Seed 1704, the same with A- = 2.8e-4 from a = 16.9: 0.98 mm at v_end = 24.66 (0.0398 s).
+  const Limits m{247058.82352941178, 24.705882352941178, 0.00027842802159904265,
+                 24.675364309147785};
+  const Profile prof2 =
+      planned({0.0, 0.0, 16.893263141832612}, 24.705882352941178, 24.663157091630428, m);
+  check_ends_with_hold(prof2, 24.663157091630428, 0.039783491070663354);
+}
+
+TEST_CASE("a root far below the end of a very long push piece is found",
+          "[profile][end_velocity]") {
+  // P14 (seed 1711): from rest at p = 0 with a = 9.06 back to 0 at v_end = 3.4e-44 (towards
+  // -), A+ = 7.6e-6, V = 1000: the push towards the target is a hold at A+ for 1.3e8 s, the
+  // root at 0.051 s. The search (Illinois, 200 steps) crawled from the near end and stopped at
+  // 3.93 s: continuity broke by 5.9e-5. Now its first point follows E ~ tau^2 and the profile
+  // takes 0.051 s, as the three-argument call to rest does.
+  const Limits l{1000.0, 7.6295109483482109e-06, 5312.5810635538264, 227389.94430457009};
+  const KinematicState s{0.0, 0.0, 9.0626382848859386};
+  const Profile prof = planned(s, 0.0, 3.4331812393645485e-44, l);
+  const Profile rest = nc::plan_position(s, 0.0, l);
+  REQUIRE(rest.ok());
+  CHECK(prof.duration() == Approx(rest.duration()).epsilon(1e-9));
+  CHECK(prof.duration() == Approx(0.051009498038301328).epsilon(1e-12));
+}
+
+TEST_CASE("the first switch inside a push piece that slows the motion is taken",
+          "[profile][end_velocity]") {
+  // Issue 14 item 1, the Bellman suite's seed 3: from v = -V = -3.29 with a = 4.8 to 0.072 mm
+  // at 2.03 mm/s, J = 3.3. Along the push's first piece (which still brings a back) E(tau) rose
+  // above the target and fell back below it, and the switch was taken at a later crossing: the
+  // profile took 3.741 s, while re-planning from its state at 0.88 s reached the target in
+  // 1.316 s. The first crossing gives 2.089 s, and re-planning from any sampled state gives the
+  // rest of it.
+  const Limits l{3.2898764527582767, 6546.635221418459, 20454.983581909062, 3.3288370245999088};
+  const KinematicState s{0.0, -3.2898764527582767, 4.7973199386656624};
+  const double target = 0.071945387924975804;
+  const double v_end = 2.033291143442896;
+  const Profile prof = planned(s, target, v_end, l);
+  CHECK(prof.duration() == Approx(2.0892070007501911).epsilon(1e-9));
+  for (double t : {0.3, 0.88, 1.2, 1.9}) {
+    INFO("re-planned at t = " << t);
+    const Profile rest = nc::plan_position(prof.at(t), target, v_end, l);
+    REQUIRE(rest.ok());
+    CHECK(std::abs(rest.duration() - (prof.duration() - t)) <= 1e-7 * prof.duration());
+  }
+}
+
+TEST_CASE("an acceleration left on the final curve within rounding ramps to 0 at J",
+          "[profile][end_velocity]") {
+  // P15 (seed 1771, after 1.3e7 executions): v 2.1e-21 below v_end = 7.04e-9, a = 4e-40,
+  // A+ = 2.06e-6, J = 4.77e-4, the target 1.6e-18 ahead. The push ended at a = 1.1e-13, on the
+  // final curve within the rise's rounding tolerance but below the final ramp's, and the change
+  // from there gave no piece: a jumped from 1.1e-13 to 0 (5e-8 of A+). Now the change ramps it
+  // to 0 at -J (1.16e-10 s) and the profile is a rise and a fall of 1.16e-10 s each.
+  const Limits l{1.8026314529717053e-06, 2.0574137664720906e-06, 7.0418701876165225e-09,
+                 0.00047673244193634565};
+  const Profile prof =
+      planned({6.5715143469463669e-110, 7.041529113169559e-09, 3.9592891430598328e-40},
+              1.6395921293743496e-18, 7.041529113171679e-09, l);
+  REQUIRE(prof.segment_count() == 2);
+  CHECK(prof.segment(1).j == -l.jerk);
+  CHECK(prof.segment(1).duration == Approx(1.1642301714750205e-10).epsilon(1e-9));
+  CHECK(prof.duration() == Approx(2.3284603429500409e-10).epsilon(1e-9));
+}
