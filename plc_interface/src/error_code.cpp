@@ -63,8 +63,8 @@ std::string_view error_text(ErrorCode code) noexcept {
       return "master or slave busy with a job while coupling";
     case E::kSlaveStartParameterWrong:
       return "slave start parameter wrong";
-    case E::kControllerEnableMissingGroup:
-      return "controller enable missing";
+    case E::kControllerEnableLost:
+      return "the axis or a coupled slave lost its controller enable while a command ran";
     case E::kOverrideTypeInvalid:
       return "override type must be 1 … 4";
     case E::kActivationPositionOverrun:

@@ -101,12 +101,14 @@ void ServoAxis::phase_monitors(AxisSnapshot& snapshot) noexcept {
 }
 
 void ServoAxis::check_enables() noexcept {
-  if (!channel_.controller_enabled()) {
-    // Losing the controller enable during a job is an axis error; there is no ramp to run (the
-    // drive is off), so the job ends here and the set values follow the actual position.
-    if ((job_.active() && job_.kind() != JobKind::kEmergencyStop) || homing_.active()) {
-      raise_error(ErrorCode::kControllerEnableMissing);
-    }
+  const bool enabled = channel_.controller_enabled();
+  const bool lost = enable_seen_ && !enabled;
+  enable_seen_ = enabled;
+  if (!enabled) {
+    // Losing the controller enable while a command runs is an axis error (enable_loss.cpp);
+    // there is no ramp to run (the drive is off), so the job ends here and the set values follow
+    // the actual position.
+    if (enable_loss_is_error(lost)) raise_error(ErrorCode::kControllerEnableLost);
     job_.clear();
     return;
   }

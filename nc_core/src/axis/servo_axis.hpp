@@ -129,6 +129,11 @@ class ServoAxis {
 
   // --- servo_axis.cpp ---
   void check_enables() noexcept;
+  // --- enable_loss.cpp (issue 10 item 4) ---
+  // The controller enable is missing in this cycle (`lost`: it was there in the last one): true
+  // when that is the axis error 0x4260, i.e. a command runs (a job, a homing, or the coupling of
+  // a slave). The one place that decides it.
+  bool enable_loss_is_error(bool lost) const noexcept;
   // Step b: the basic source's set values, then the superposition stack on top.
   void generate_set_values(std::span<const AxisSnapshot> snapshots) noexcept;
   // The one basic source of this cycle (set_value_source.hpp).
@@ -305,6 +310,7 @@ class ServoAxis {
   bool locked_ = false;  // MC_Stop: motion commands refused until kStopRelease
   bool has_been_stopped_ = false;
   bool error_event_ = false;  // an error was raised in this cycle
+  bool enable_seen_ = false;  // the controller enable of the last check_enables()
   uint32_t errors_raised_ = 0;
 
   // Kind kTwoSpeed: the phases run this instead of the servo path (AxisKind dispatch).

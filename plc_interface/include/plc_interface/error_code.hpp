@@ -43,7 +43,8 @@ enum class ErrorCode : uint32_t {
   kCompensationStopNotAllowed = 0x4258,
   kBusyWhileCoupling = 0x425A,
   kSlaveStartParameterWrong = 0x425B,
-  kControllerEnableMissingGroup = 0x4260,
+  // The axis or a coupled slave lost its controller enable while executing a command.
+  kControllerEnableLost = 0x4260,
   kOverrideTypeInvalid = 0x426C,
   kActivationPositionOverrun = 0x426D,
   kCompensationLengthInvalid = 0x4270,
@@ -55,7 +56,7 @@ enum class ErrorCode : uint32_t {
   kDecouplingTypeInvalid = 0x428D,
   kDecouplingVelocityInvalid = 0x428E,
   kMotionCommandsLocked = 0x42EF,
-  kControllerEnableMissing = 0x4356,
+  kControllerEnableMissing = 0x4356,  // HLI target's drive, two-speed axis (not a gear axis)
   kFeedEnableMinusMissing = 0x4357,
   kFeedEnablePlusMissing = 0x4358,
   kSetVelocityNotAllowed = 0x4359,
