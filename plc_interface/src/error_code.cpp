@@ -152,6 +152,10 @@ std::string_view error_text(ErrorCode code) noexcept {
       return "homing: setting the position needs the axis at rest without a job";
     case E::kBufferFull:
       return "a buffered command already waits on this axis";
+    case E::kAccBoundBelowStability:
+      return "cyclic slave: AccBound below the stability bound (warning)";
+    case E::kGearRatio1NotTaken:
+      return "cyclic slave: GearRatio1 0, NaN, infinite or too large, old factor kept (warning)";
     case E::kHliFractOnReferencedAxis:
       return "FRACT coupling: the axis cannot stop before a software limit";
     case E::kHliChangeWhileMoving:

@@ -160,6 +160,7 @@ void ServoAxis::generate_set_values(std::span<const AxisSnapshot> snapshots) noe
     }
     case SetValueSource::kSlaveLink: {
       const AxisSnapshot& master = snapshots[slave_link_.master];
+      if (slave_link_.cyclic) step_cyclic_factor(master);  // cyclic_slave.cpp
       base_ = slave_link_.sample(master, set_.p);
       set_jerk_ = slave_link_.factor * master.set_jerk;
       break;

@@ -91,6 +91,9 @@ enum class ErrorCode : uint32_t {
   kHomingSyncPulseNotFound = 0x4F22,  // cam edge or sync pulse not within the search distance
   kHomingAxisMoving = 0x4F23,         // MC_Direct while the axis has a job or moves
   kBufferFull = 0x4F60,               // a buffered command already waits on this axis
+  // Cyclic slave (MC_GearInDyn; ncsdk's range 0x4F80 … 0x4F8F), both warnings.
+  kAccBoundBelowStability = 0x4F80,  // AccBound < max|factor| × the master's max acceleration
+  kGearRatio1NotTaken = 0x4F81,      // PlcToNc.GearRatio1 0, NaN, inf or above 1e6: old factor kept
 
   // --- CNC HLI coupling IDs (decimal) ---
   kHliFractOnReferencedAxis = 70195,
@@ -111,7 +114,8 @@ std::string_view error_text(uint32_t code) noexcept;
 // True for codes that are warnings (the command still runs).
 constexpr bool is_warning(ErrorCode code) noexcept {
   return code == ErrorCode::kMovementSmallerThanIncrement ||
-         code == ErrorCode::kCompensationIncomplete;
+         code == ErrorCode::kCompensationIncomplete || code == ErrorCode::kAccBoundBelowStability ||
+         code == ErrorCode::kGearRatio1NotTaken;
 }
 
 }  // namespace plc
