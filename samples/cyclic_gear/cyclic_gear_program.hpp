@@ -189,21 +189,14 @@ struct Options {
   double settle_time = 0.2;  // s recorded after the master's stop
 };
 
-inline nc::AxisConfig sample_axis_config(const char* name) {
-  nc::AxisConfig config;
-  config.name = name;
-  sample_common::use_lagging_drive(config, 5.0);
-  return config;
-}
-
 class CyclicGearSample {
  public:
   static constexpr const char* kNames[2] = {"Master", "Slave"};
 
   explicit CyclicGearSample(const Options& options = {})
       : kernel_(nc::KernelConfig{options.nc_cycle}),
-        master_(kernel_.add_axis(sample_axis_config(kNames[0]))),
-        slave_(kernel_.add_axis(sample_axis_config(kNames[1]))),
+        master_(kernel_.add_axis(sample_common::lagging_axis(kNames[0], 5.0))),
+        slave_(kernel_.add_axis(sample_common::lagging_axis(kNames[1], 5.0))),
         driver_(kernel_),
         scope_(sample_common::scope_capacity(options)),
         options_(options) {
@@ -249,24 +242,12 @@ class CyclicGearSample {
       const std::filesystem::path& dir) const {
     const auto [csv, svg] = sample_common::csv_and_svg(dir, "cyclic_gear");
     scope_.write_csv(csv);
-    const char* colours[2] = {"#00008b", "#8b0000"};
-    const struct {
-      const char* id;
-      const char* title;
-      const char* unit;
-      nc::Signal signal;
-    } kinds[] = {{"panel-position", "Set position", "mm", nc::Signal::kSetPos},
-                 {"panel-velocity", "Set velocity", "mm/s", nc::Signal::kSetVelo},
-                 {"panel-acceleration", "Set acceleration", "mm/s²", nc::Signal::kSetAcc}};
-    std::vector<nc::PlotPanel> panels;
-    for (const auto& k : kinds) {
-      nc::PlotPanel panel{k.id, k.title, k.unit, {}};
-      for (int i = 0; i < 2; ++i) {
-        panel.series.push_back(
-            {kNames[i], colours[i], scope_.values(scope_.find(kNames[i], k.signal)), 1.5});
-      }
-      panels.push_back(std::move(panel));
-    }
+    const char* const colours[2] = {"#00008b", "#8b0000"};
+    const sample_common::AxisPanel kinds[] = {
+        {"panel-position", "Set position", "mm", nc::Signal::kSetPos},
+        {"panel-velocity", "Set velocity", "mm/s", nc::Signal::kSetVelo},
+        {"panel-acceleration", "Set acceleration", "mm/s²", nc::Signal::kSetAcc}};
+    std::vector<nc::PlotPanel> panels = sample_common::axis_panels(scope_, kNames, colours, kinds);
     nc::PlotPanel factor{"panel-factor", "Slave factor", "", {}};
     factor.series.push_back(
         {"GearRatio1 (PLC)", "#808080", scope_.values(scope_.find("Slave.GearRatio1")), 1.0});
