@@ -70,11 +70,32 @@ elif ! cmake --build "${fuzz_build}" -j "${jobs}"; then
 else
   echo "=== fuzz: ctest (each target ${NCSDK_FUZZ_SECONDS:-60} s) ==="
   fuzz_log="${fuzz_build}/ctest-summary.log"
+  rm -f "${fuzz_build}"/tests/fuzz/work/*/artifacts/*  # only this run's findings are shown below
   ctest --test-dir "${fuzz_build}/tests/fuzz" --output-on-failure -j 1 | tee "${fuzz_log}"
   [[ ${PIPESTATUS[0]} -eq 0 ]] || failed=1
   summary="$(grep -E '[0-9]+% tests passed' "${fuzz_log}" | tail -n1)"
   result_fuzz="${summary:-no ctest summary}"
 fi
+
+# A fuzz finding in CI is only worth something if it can be replayed: CI keeps the end of the log
+# only, so the reason and the input (base64, at most two inputs of 3 kB) are printed again here.
+# Replay: base64 -d > input; build-tests-fuzz/tests/fuzz/fuzz_<target> input.
+print_fuzz_findings() {
+  local artifacts=("${fuzz_build}"/tests/fuzz/work/*/artifacts/*)
+  [[ -e "${artifacts[0]}" ]] || return 0
+  echo "=== fuzz findings ==="
+  grep -E 'fuzz invariant broken|ERROR: (AddressSanitizer|libFuzzer|UndefinedBehaviorSanitizer)|runtime error' \
+    "${fuzz_log}" | head -n 5
+  local shown=0 artifact
+  for artifact in "${artifacts[@]}"; do
+    [[ ${shown} -lt 2 ]] || break
+    echo "input ${artifact#"${fuzz_build}/tests/fuzz/work/"} ($(stat -c %s "${artifact}") bytes), base64:"
+    head -c 3072 "${artifact}" | base64 -w 0
+    echo
+    shown=$((shown + 1))
+  done
+}
+[[ -z "${fuzz_log:-}" ]] || print_fuzz_findings
 
 # Totals over the three runs; a run that did not get to ctest counts as one failure.
 total_passed=0

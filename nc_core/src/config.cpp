@@ -215,6 +215,10 @@ std::string_view to_string(DriveModel model) {
   return enum_to_string<DriveModel>(kDriveModelNames, model);
 }
 
+std::string_view to_string(ErrorPropagation mode) {
+  return enum_to_string<ErrorPropagation>(kErrorPropagationNames, mode);
+}
+
 std::vector<FieldDoc> describe_kernel_fields() {
   std::vector<FieldDoc> rows;
   const KernelConfig defaults{};

@@ -55,6 +55,7 @@ plc::AXIS_REF& Kernel::add_axis(const AxisConfig& config) {
   hli_->add_axis(effective);
   couplings_.add_axis();
   snapshots_.emplace_back();
+  group_ready_.push_back(0);
   axes_.push_back(std::move(axis));
   return axes_.back()->ref();
 }
@@ -113,16 +114,38 @@ void Kernel::cycle() noexcept {
   const std::size_t block = couplings_.has_couplings() || hli ? n : kBlockAxes;
   for (std::size_t first = 0; first < n; first += block)
     run_phases(first, std::min(n, first + block), counter);
+  mark_ready_groups();
   cycles_ = counter;
 }
 
+void Kernel::mark_ready_groups() noexcept {
+  const std::size_t n = axes_.size();
+  for (std::size_t i = 0; i < n; ++i)
+    group_ready_[i] = 1;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (snapshots_[i].error != plc::ErrorCode::kNone || !snapshots_[i].controller_enabled) {
+      group_ready_[couplings_.group(i)] = 0;
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (couplings_.group(i) == i) axes_[i]->set_group_ready(group_ready_[i] != 0);
+  }
+}
+
+plc::ErrorCode Kernel::push_by_hand(std::size_t axis, double velocity) noexcept {
+  if (axis >= axes_.size()) return plc::ErrorCode::kInvalidAxisReference;
+  return axes_[axis]->push_by_hand(velocity);
+}
+
 void Kernel::react_in_groups() noexcept {
-  // SPEC C7, INSTANTANEOUS (seed 000 §3.1): an error raised in this cycle on any axis of a
-  // master/slave group reaches every axis of the group in the same cycle, with the faulty axis's
-  // code. Errors are rare: the scan over the group's axes runs only for an axis with a new one.
+  // SPEC C7 (seed 000 §3.1): the group reaction of an axis's own error reaches every axis of its
+  // master/slave group as the group is in this cycle, with the faulty axis's code. INSTANTANEOUS:
+  // in the cycle the error is raised; DELAYED: when the faulty axis's delay has run out
+  // (ServoAxis::group_reaction_due). Errors are rare: the scan over the group's axes runs only
+  // for an axis whose reaction is due.
   const std::size_t n = axes_.size();
   for (std::size_t i = 0; i < n; ++i) {
-    if (!snapshots_[i].error_event) continue;
+    if (!snapshots_[i].group_reaction_due) continue;
     const std::size_t group = couplings_.group(i);
     const plc::ErrorCode code = snapshots_[i].error;
     for (std::size_t j = 0; j < n; ++j) {

@@ -156,6 +156,8 @@ std::string_view error_text(ErrorCode code) noexcept {
       return "cyclic slave: AccBound below the stability bound (warning)";
     case E::kGearRatio1NotTaken:
       return "cyclic slave: GearRatio1 0, NaN, infinite or too large, old factor kept (warning)";
+    case E::kPushByHandControllerEnabled:
+      return "push by hand: the axis has its controller enable (the drive holds it)";
     case E::kHliFractOnReferencedAxis:
       return "FRACT coupling: the axis cannot stop before a software limit";
     case E::kHliChangeWhileMoving:

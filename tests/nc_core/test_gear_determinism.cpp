@@ -10,18 +10,9 @@
 
 #include "gear_rig.hpp"
 
-namespace {
-
-struct Step {
-  int cycle;
-  std::function<void(gr::Rig&)> act;
-};
-
-}  // namespace
-
 TEST_CASE("runs with couplings, decoupling, compensation and group errors are bit-identical",
           "[gear][determinism]") {
-  const std::vector<Step> script = {
+  const std::vector<gr::Step<gr::Rig>> script = {
       {0, [](gr::Rig& r) { r.post(1, gr::gear_in(0, 0.75)); }},
       {1, [](gr::Rig& r) { r.post(2, gr::gear_in(1, -0.5)); }},
       {1, [](gr::Rig& r) { r.post(3, gr::gear_in(0, 1.0 / 3.0)); }},
@@ -45,19 +36,10 @@ TEST_CASE("runs with couplings, decoupling, compensation and group errors are bi
   };
   gr::Rig a(4);
   gr::Rig b(4);
-  std::size_t next = 0;
   bool group_error_seen = false;
-  for (int cycle = 0; cycle < 6000; ++cycle) {
-    for (; next < script.size() && script[next].cycle == cycle; ++next) {
-      script[next].act(a);
-      script[next].act(b);
-    }
-    a.kernel.cycle();
-    b.kernel.cycle();
-    for (std::size_t i = 0; i < 4; ++i)
-      REQUIRE(kt::same_image(a.at(i).NcToPlc, b.at(i).NcToPlc));
-    group_error_seen = group_error_seen || a.at(0).NcToPlc.ErrorCode != 0U;
-  }
+  CHECK(gr::first_difference(script, a, b, 6000, [&](gr::Rig& r) {
+          group_error_seen = group_error_seen || r.at(0).NcToPlc.ErrorCode != 0U;
+        }) == -1);
   CHECK(group_error_seen);
   CHECK(a.at(1).NcToPlc.CoupleState == 1U);  // decoupled, still Slave2's master
   CHECK(a.at(3).NcToPlc.CoupleState == 3U);

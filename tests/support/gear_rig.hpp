@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -32,19 +33,24 @@ inline plc::Command gear_out() {
 }
 
 // `n` seed axes (names "A0" …), enabled, one cycle run. `encoder` marks axis indices that are
-// encoder axes.
+// encoder axes; or tune(i, config) changes axis i's configuration before it is added.
 struct Rig {
   nc::Kernel kernel;
   std::vector<plc::AXIS_REF*> axes;
 
-  explicit Rig(std::size_t n, const std::vector<std::size_t>& encoder = {}) {
+  explicit Rig(std::size_t n, const std::vector<std::size_t>& encoder = {})
+      : Rig(n, [&encoder](std::size_t i, nc::AxisConfig& c) {
+          for (std::size_t e : encoder) {
+            if (e == i) c.kind = nc::AxisKind::kEncoder;
+          }
+        }) {}
+
+  Rig(std::size_t n, const std::function<void(std::size_t, nc::AxisConfig&)>& tune) {
     for (std::size_t i = 0; i < n; ++i) {
       std::string name(1, 'A');
       name += std::to_string(i);
       nc::AxisConfig c = kt::seed_axis(name);
-      for (std::size_t e : encoder) {
-        if (e == i) c.kind = nc::AxisKind::kEncoder;
-      }
+      tune(i, c);
       axes.push_back(&kernel.add_axis(c));
       kt::set_enables(*axes.back(), true);
     }
@@ -78,6 +84,34 @@ struct Rig {
       kernel.cycle();
   }
 };
+
+// One step of a determinism script: what the PLC does to a rig before NC cycle `cycle`.
+template <class R>
+struct Step {
+  int cycle;
+  std::function<void(R&)> act;
+};
+
+// Plays `script` (sorted by cycle) on two rigs built alike for `cycles` NC cycles, comparing
+// every axis's NC→PLC image after each; `each(a)` sees rig `a` after every cycle. The first
+// cycle whose images differ, or -1 when they never do.
+template <class R, class Each>
+int first_difference(const std::vector<Step<R>>& script, R& a, R& b, int cycles, Each&& each) {
+  std::size_t next = 0;
+  for (int cycle = 0; cycle < cycles; ++cycle) {
+    for (; next < script.size() && script[next].cycle == cycle; ++next) {
+      script[next].act(a);
+      script[next].act(b);
+    }
+    a.kernel.cycle();
+    b.kernel.cycle();
+    for (std::size_t i = 0; i < a.axes.size(); ++i) {
+      if (!kt::same_image(a.axes[i]->NcToPlc, b.axes[i]->NcToPlc)) return cycle;
+    }
+    each(a);
+  }
+  return -1;
+}
 
 // Two identical rigs: a command goes to the probe only; every axis's image must stay the same.
 struct TwinRigs {

@@ -27,6 +27,12 @@ enum class DriveModel {
   kFirstOrderLag,  // first-order lag (drive_time_constant) plus dead time (drive_dead_time)
 };
 
+// What an error of a coupled axis does to its master/slave group (SPEC C7, seed 000 §3.1).
+enum class ErrorPropagation {
+  kInstantaneous,  // the whole group stops at once
+  kDelayed,        // only the faulty axis at once; the group after error_propagation_delay
+};
+
 // A new field also needs its line in visit_fields() (config_fields.hpp): that one line makes it
 // readable from JSON, written to JSON, validated and documented.
 struct AxisConfig {
@@ -104,6 +110,17 @@ struct AxisConfig {
   // velocity and position". Each taken packet is carried this far ahead along its velocity and
   // acceleration, compensating the transport dead time of the cyclic interface.
   double ext_setpoint_delay = 0.0;  // s, 0 … 1 (0 = none)
+
+  // Error propagation in a master/slave group and coupling to actual values (SPEC C7, C8; seed
+  // 000 §3.1; docs/behaviour.md "Error propagation and actual-value coupling"). Continuous and
+  // encoder axes only; the faulty axis's own mode and delay decide.
+  ErrorPropagation error_propagation_mode = ErrorPropagation::kInstantaneous;
+  double error_propagation_delay = 0.0;  // s, >= 0, finite: DELAYED's wait for the group
+  // The axis's slaves follow its filtered actual position while it has an error (DELAYED) or,
+  // as head master, while its controller enable is off (pushed by hand).
+  bool couple_slave_to_actual_values = false;
+  double actual_value_velocity_window = 1.0;  // mm/s, > 0: filtered speed below it = standstill
+  double actual_value_filter_time = 0.01;     // s, > 0: first-order filter of the actual value
 
   // HLI axis coupling, command-position request (SPEC D5, seed 002 §4). The CNC parameters in
   // their native units load from the JSON "cnc" object (docs/configuration.md).

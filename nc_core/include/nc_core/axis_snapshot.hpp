@@ -29,6 +29,7 @@ struct AxisSnapshot {
   double actual_acceleration = 0.0;
   plc::ErrorCode error = plc::ErrorCode::kNone;  // the axis's latched error
   bool error_event = false;                      // the error was raised in this cycle
+  bool group_reaction_due = false;  // the group reaction of the axis's own error acts now (C7)
   bool controller_enabled = false;
   bool feed_enabled_plus = false;
   bool feed_enabled_minus = false;

@@ -85,6 +85,7 @@ nlohmann::json to_json(const KernelSetup& setup);
 // JSON spelling of the enum values ("continuous", "first_order_lag").
 std::string_view to_string(AxisKind kind);
 std::string_view to_string(DriveModel model);
+std::string_view to_string(ErrorPropagation mode);  // "instantaneous", "delayed"
 
 // One row of the field reference (docs/configuration.md), taken from the visitor.
 struct FieldDoc {

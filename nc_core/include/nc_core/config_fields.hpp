@@ -86,6 +86,10 @@ inline constexpr EnumName<DriveModel> kDriveModelNames[] = {
     {DriveModel::kIdeal, "ideal"},
     {DriveModel::kFirstOrderLag, "first_order_lag"},
 };
+inline constexpr EnumName<ErrorPropagation> kErrorPropagationNames[] = {
+    {ErrorPropagation::kInstantaneous, "instantaneous"},
+    {ErrorPropagation::kDelayed, "delayed"},
+};
 
 // The visitor is called as visitor(const FieldInfo&, Field& value, const Rule& rule) once per
 // field, in declaration order. Config may be const (writing, validating) or not (reading).
@@ -203,6 +207,24 @@ void visit_fields(Config& c, Visitor&& v) {
   v(FieldInfo{"ext_setpoint_delay", "s",
               "delay time between velocity and position: external packets carried ahead by it"},
     c.ext_setpoint_delay, closed_range(0.0, 1.0));
+
+  v(FieldInfo{"error_propagation_mode", "",
+              "instantaneous: an error stops the whole master/slave group at once; delayed: "
+              "only the faulty axis, the group after the delay"},
+    c.error_propagation_mode, EnumRule<ErrorPropagation>{kErrorPropagationNames});
+  v(FieldInfo{"error_propagation_delay", "s",
+              "delayed: time from the error to the group reaction (whole NC cycles)"},
+    c.error_propagation_delay, kNonNegative);
+  v(FieldInfo{"couple_slave_to_actual_values", "",
+              "slaves follow this axis's actual values when it has an error (delayed) or, as "
+              "head master, has no controller enable"},
+    c.couple_slave_to_actual_values, FlagRule{});
+  v(FieldInfo{"actual_value_velocity_window", "mm/s",
+              "actual-value coupling: filtered speed below this counts as standstill"},
+    c.actual_value_velocity_window, kPositive);
+  v(FieldInfo{"actual_value_filter_time", "s",
+              "actual-value coupling: time constant of the actual-position filter"},
+    c.actual_value_filter_time, kPositive);
 
   v(FieldInfo{"recalc_link_main_input_position", "",
               "P-AXIS-00436: command-position request maps the drive position forward"},

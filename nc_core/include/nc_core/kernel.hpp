@@ -90,6 +90,16 @@ class Kernel {
   // P-AXIS-00436 / 00460. NaN for an unknown axis number.
   double command_position_request(int ax_nr) const noexcept;
 
+  // The simulated drive of a continuous axis whose controller enable is off is moved by hand
+  // at `velocity` (mm/s, signed) from the next cycle on, until another velocity is given or the
+  // controller enable returns (the push ends then). For tests and samples of SPEC C8 (a head
+  // master pushed by hand). kNone when taken; refused, nothing changed: an unknown axis index
+  // (kInvalidAxisReference), a velocity NaN or infinite (kParameterNotFinite) or above the axis's
+  // max_velocity in size (kVelocityNotAllowed), an encoder or two-speed axis
+  // (kAxisKindNotAllowed), an axis with its controller enable (kPushByHandControllerEnabled).
+  // Between cycles; noexcept, no allocation.
+  plc::ErrorCode push_by_hand(std::size_t axis, double velocity) noexcept;
+
   double cycle_time() const noexcept { return config_.cycle_time; }
   // Completed NC cycles since the kernel was made.
   uint64_t cycle_count() const noexcept { return cycles_; }
@@ -105,11 +115,15 @@ class Kernel {
   void run_phases(std::size_t first, std::size_t last, uint64_t counter) noexcept;
   // Phase (e), with couplings: an axis's new error reaches its whole group (SPEC C7).
   void react_in_groups() noexcept;
+  // After all phases: tells each group's head whether its group has no error and every axis
+  // enabled (the precondition of SPEC C8 case 2, ServoAxis::follows_by_hand()).
+  void mark_ready_groups() noexcept;
 
   KernelConfig config_;
   std::vector<std::unique_ptr<detail::ServoAxis>> axes_;
   std::vector<AxisSnapshot> snapshots_;
   CouplingGraph couplings_;
+  std::vector<uint8_t> group_ready_;  // scratch of mark_ready_groups(), one per axis
   // Phase (c): the HLI coupling stage (on the heap: its control units keep their addresses).
   std::unique_ptr<detail::HliPhase> hli_;
   // One planning scratch profile for all axes (a start plans here first, so a refusal changes

@@ -42,7 +42,7 @@ void ServoAxis::handle(const plc::Command& command, CouplingPort& port) noexcept
   ErrorCode code = ErrorCode::kNone;
   // An HLI target's program feeds its drive only through its list (SPEC D3): external setpoints
   // are refused there as on a coupled slave.
-  if ((slave_link_.coupled && refused_while_coupled(command.type)) ||
+  if (((slave_link_.coupled || slave_link_.detached) && refused_while_coupled(command.type)) ||
       (hli_target() && command.type == CommandType::kExtSetPointGenEnable)) {
     channel_.answer(command.number, CommandState::kError,
                     plc::to_id(ErrorCode::kFunctionNotAllowed));

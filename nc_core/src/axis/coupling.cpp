@@ -48,6 +48,7 @@ ErrorCode ServoAxis::check_gear_ratio(double ratio) noexcept {
 
 ErrorCode ServoAxis::check_gear_master(const plc::Command& command,
                                        CouplingPort& port) const noexcept {
+  if (slave_link_.detached) return ErrorCode::kFunctionNotAllowed;  // C7: MC_GearOut first
   if (config_.kind == AxisKind::kEncoder) return ErrorCode::kAxisKindNotAllowed;
   if (command.other_axis < 0 || static_cast<std::size_t>(command.other_axis) >= port.axes.size()) {
     return ErrorCode::kInvalidAxisReference;
@@ -142,6 +143,7 @@ bool ServoAxis::decoupling_chain(CouplingPort& port, DecouplingChain& chain,
 }
 
 ErrorCode ServoAxis::gear_out(const plc::Command& command, CouplingPort& port) noexcept {
+  if (slave_link_.detached) return release_detached(command, port);  // C7 DELAYED
   if (!slave_link_.coupled) return ErrorCode::kDecouplingNotAllowed;
   // Online when the slave moves (its master's velocity is not 0); at override 0 or at rest it
   // decouples offline (seed 000 §3.2.3).

@@ -10,7 +10,8 @@ bool ServoAxis::enable_loss_is_error(bool lost) const noexcept {
   if ((job_.active() && job_.kind() != JobKind::kEmergencyStop) || homing_.active()) return true;
   // A coupled slave executes its coupling command (MC_GearIn / MC_GearInDyn stays Busy): the
   // edge of the enable is the error; the group reaction (SPEC C7) then reaches its master.
-  // (SPEC C8 case 2, a head master pushed by hand, is not an error: its exemption belongs here.)
+  // (SPEC C8 case 2, a head master pushed by hand, is no error: check_enables() asks
+  // update_by_hand() first and does not get here then.)
   return lost && slave_link_.coupled;
 }
 

@@ -44,7 +44,7 @@ void ServoAxis::phase_publish(uint64_t cycle_counter) noexcept {
   out.CompensationVelocityDiff = stack_.compensation().velocity_diff();
   channel_.publish(static_cast<int32_t>(index_));
   // A gear slave, or an HLI target (a list in force); a gear master, or an HLI source.
-  const bool slave = slave_link_.coupled || hli_target();
+  const bool slave = slave_link_.coupled || slave_link_.detached || hli_target();
   const bool master = slave_count_ > 0 || hli_source();
   const plc::CoupleState couple =
       slave ? (master ? plc::CoupleState::kMasterAndSlave : plc::CoupleState::kSlave)
@@ -83,6 +83,7 @@ void ServoAxis::phase_publish(uint64_t cycle_counter) noexcept {
   set_bit(plc::kStateSoftLimitMinExceeded, monitors_.below_min(actual));
   set_bit(plc::kStateSoftLimitMaxExceeded, monitors_.above_max(actual));
   set_bit(plc::kStateMotionCommandsLocked, locked_);
+  set_bit(plc::kStateErrorPropagationDelayed, propagation_.delayed());  // C7 DELAYED
   set_bit(plc::kStateError, error);
   out.StateDWord = word;
 

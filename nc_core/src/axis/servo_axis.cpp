@@ -64,6 +64,7 @@ void ServoAxis::phase_set_values(AxisSnapshot& snapshot,
   snapshot.set_velocity = set_.v;
   snapshot.set_acceleration = set_.a;
   snapshot.set_jerk = set_jerk_;
+  publish_for_slaves(snapshot);  // C8: the filtered actual values instead (error_propagation.cpp)
 }
 
 void ServoAxis::phase_drive_command(const KinematicState& drive, ErrorCode stop,
@@ -94,6 +95,7 @@ void ServoAxis::phase_monitors(AxisSnapshot& snapshot) noexcept {
   finish_job();
   snapshot.error = channel_.error();
   snapshot.error_event = error_event_;
+  snapshot.group_reaction_due = group_reaction_due();
   const uint32_t control = channel_.ref().PlcToNc.ControlDWord;
   snapshot.controller_enabled = plc::test_bit(control, plc::kControlEnable);
   snapshot.feed_enabled_plus = plc::test_bit(control, plc::kControlFeedEnablePlus);
@@ -104,6 +106,7 @@ void ServoAxis::check_enables() noexcept {
   const bool enabled = channel_.controller_enabled();
   const bool lost = enable_seen_ && !enabled;
   enable_seen_ = enabled;
+  if (update_by_hand()) return;  // C8 case 2: the group follows this master pushed by hand
   if (!enabled) {
     // Losing the controller enable while a command runs is an axis error (enable_loss.cpp);
     // there is no ramp to run (the drive is off), so the job ends here and the set values follow
@@ -234,7 +237,7 @@ void ServoAxis::control_and_drive() noexcept {
   if (!channel_.controller_enabled()) {
     // TwinCAT: without controller enable the drive is off and the set position follows the
     // actual position, so there is no following error to jump at when the enable returns.
-    drive_.step(0.0, false);
+    drive_.step(hand_velocity_, hand_velocity_ != 0.0);  // Kernel::push_by_hand, else off
     drive_command_ = KinematicState{drive_.measured_position(), 0.0, 0.0};
     set_ = KinematicState{drive_.measured_position() - drive_offset_, 0.0, 0.0};
     target_ = set_.p;
@@ -324,6 +327,7 @@ void ServoAxis::raise_error(ErrorCode code) noexcept {
   drop_buffer(CommandState::kError, plc::to_id(code));  // a waiting command fails with the axis
   // The compensation fails with the axis; external generation is switched off (seed 000 §2.6).
   fold_superpositions(CommandState::kError, code);
+  begin_error_propagation();  // C7: DELAYED, a slave leaves its master here
   // A coupled slave's motion is its master's: it goes on following (group reactions: SPEC C7).
   if (slave_link_.coupled) return;
   if (!channel_.controller_enabled()) {
@@ -346,13 +350,16 @@ void ServoAxis::raise_error(ErrorCode code) noexcept {
 }
 
 void ServoAxis::group_error(ErrorCode code) noexcept {
+  receiving_group_error_ = true;  // not this axis's own error: nothing propagates from it
   raise_error(code);
+  receiving_group_error_ = false;
 }
 
 void ServoAxis::reset_error() noexcept {
   channel_.clear_warnings();
   if (!channel_.has_error()) return;
   channel_.clear_error();
+  propagation_.cancel();  // C7: a reset before the delay has run out: no group reaction
   if (!job_.active() && !slave_link_.coupled) {
     // The axis holds where it stands: no following error is carried over into the next start.
     set_ = KinematicState{drive_.measured_position() - drive_offset_, 0.0, 0.0};

@@ -18,6 +18,7 @@
 #include "axis/command_buffer.hpp"
 #include "axis/compensation.hpp"
 #include "axis/drive.hpp"
+#include "axis/error_propagation.hpp"
 #include "axis/external_setpoint.hpp"
 #include "axis/master_job.hpp"
 #include "axis/monitors.hpp"
@@ -100,6 +101,18 @@ class ServoAxis {
   // axis with the faulty axis's code; the first error stays. A slave goes on following (its
   // head master's emergency ramp brings it down); a master stops on its emergency ramp.
   void group_error(ErrorCode code) noexcept;
+
+  // --- error_propagation.cpp (SPEC C7, C8; seed 000 §3.1) ---
+  // Case 2 of C8: this head master's controller enable is off in a group that had no error and
+  // every axis enabled when it went, and couple_slave_to_actual_values is set: the group follows
+  // its actual values (pushed by hand). Losing the controller enable is no error then.
+  bool follows_by_hand() const noexcept;
+  // Kernel, after the group reactions of each cycle: `ready` = this axis heads a group in which
+  // no axis has an error and every axis has its controller enable (the precondition of case 2).
+  void set_group_ready(bool ready) noexcept { group_ready_ = ready; }
+  // Kernel::push_by_hand: the drive of this disabled continuous axis moves at `velocity` (mm/s)
+  // from the next cycle on, until the controller enable returns or another velocity is given.
+  ErrorCode push_by_hand(double velocity) noexcept;
 
  private:
   // --- commands.cpp ---
@@ -215,6 +228,25 @@ class ServoAxis {
   // setpoint generation (compensation is allowed: C5).
   static bool refused_while_coupled(plc::CommandType type) noexcept;
 
+  // --- error_propagation.cpp ---
+  // From raise_error() for the axis's own error: starts the countdown to the group reaction
+  // (0 cycles unless DELAYED in a group); a DELAYED slave leaves its master's coupling at once
+  // (its link stays in the graph, SlaveLink::detached, until MC_GearOut).
+  void begin_error_propagation() noexcept;
+  // The monitor phase: the group reaction of this axis's error is due in this cycle.
+  bool group_reaction_due() noexcept;
+  // MC_GearOut of a slave that left its master on its own error: the link leaves the graph.
+  ErrorCode release_detached(const plc::Command& command, CouplingPort& port) noexcept;
+  // C8: the slaves of this axis follow its filtered actual values in this cycle.
+  bool drives_slaves_by_actual() const noexcept;
+  // The set values phase: the snapshot's set values for the slaves, from the filtered actual
+  // position of the previous cycle while drives_slaves_by_actual().
+  void publish_for_slaves(AxisSnapshot& snapshot) noexcept;
+  // check_enables(), first: enters case 2 when follows_by_hand() holds (a running job ends
+  // CommandAborted) and leaves it when it no longer does (the push by hand ends). True while
+  // in case 2: the lost controller enable is no error.
+  bool update_by_hand() noexcept;
+
   // --- homing/home_command.cpp (MC_Home, SPEC F; docs/behaviour.md "Homing") ---
   ErrorCode start_home(const plc::Command& command) noexcept;
   // Position setting: every displayed position (set, actual, target) moves by `delta`; nothing
@@ -329,6 +361,13 @@ class ServoAxis {
   bool has_been_stopped_ = false;
   bool error_event_ = false;  // an error was raised in this cycle
   bool enable_seen_ = false;  // the controller enable of the last check_enables()
+  // C7 / C8 (error_propagation.cpp).
+  PropagationDelay propagation_{};
+  bool receiving_group_error_ = false;  // raise_error() called by group_error()
+  bool group_ready_ = false;            // see set_group_ready()
+  bool by_hand_ = false;                // case 2 in force (follows_by_hand() latched)
+  double hand_velocity_ = 0.0;          // push_by_hand(), mm/s
+  ActualValueFilter actual_filter_{};
   uint32_t errors_raised_ = 0;
 
   // Kind kTwoSpeed: the phases run this instead of the servo path (AxisKind dispatch).

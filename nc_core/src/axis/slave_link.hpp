@@ -23,9 +23,12 @@ struct SlaveLink {
   bool coupled = false;
   bool retake_offset = false;  // the offset is taken again from the positions in the next sample
   bool cyclic = false;         // MC_GearInDyn: the factor follows PlcToNc.GearRatio1
-  uint32_t master = 0;         // kernel index of the master
-  uint16_t command = 0;        // the MC_GearIn / MC_GearInDyn command number in force
-  double factor = 1.0;         // the factor in force
+  // SPEC C7 DELAYED: the slave left this coupling on its own error (coupled is false); the link
+  // stays in the coupling graph, so the group is still known, until MC_GearOut.
+  bool detached = false;
+  uint32_t master = 0;   // kernel index of the master
+  uint16_t command = 0;  // the MC_GearIn / MC_GearInDyn command number in force (CmdNo)
+  double factor = 1.0;   // the factor in force
   double offset = 0.0;
   double master_p = 0.0;  // the master's set position of the last sample
   double slave_p = 0.0;   // the slave's basic set position of the last sample
@@ -43,6 +46,7 @@ struct SlaveLink {
     coupled = true;
     retake_offset = false;
     cyclic = false;
+    detached = false;
     master = master_index;
     command = number;
     factor = ratio;

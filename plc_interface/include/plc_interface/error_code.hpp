@@ -94,6 +94,8 @@ enum class ErrorCode : uint32_t {
   // Cyclic slave (MC_GearInDyn; ncsdk's range 0x4F80 … 0x4F8F), both warnings.
   kAccBoundBelowStability = 0x4F80,  // AccBound < max|factor| × the master's max acceleration
   kGearRatio1NotTaken = 0x4F81,      // PlcToNc.GearRatio1 0, NaN, inf or above 1e6: old factor kept
+  // Error propagation and actual-value coupling (SPEC C7, C8; ncsdk's range 0x4F90 … 0x4F9F).
+  kPushByHandControllerEnabled = 0x4F90,  // Kernel::push_by_hand on an axis that is enabled
 
   // --- CNC HLI coupling IDs (decimal) ---
   kHliFractOnReferencedAxis = 70195,
