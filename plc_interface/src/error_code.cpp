@@ -63,8 +63,8 @@ std::string_view error_text(ErrorCode code) noexcept {
       return "master or slave busy with a job while coupling";
     case E::kSlaveStartParameterWrong:
       return "slave start parameter wrong";
-    case E::kControllerEnableMissingGroup:
-      return "controller enable missing";
+    case E::kControllerEnableLost:
+      return "the axis or a coupled slave lost its controller enable while a command ran";
     case E::kOverrideTypeInvalid:
       return "override type must be 1 … 4";
     case E::kActivationPositionOverrun:
@@ -152,6 +152,10 @@ std::string_view error_text(ErrorCode code) noexcept {
       return "homing: setting the position needs the axis at rest without a job";
     case E::kBufferFull:
       return "a buffered command already waits on this axis";
+    case E::kAccBoundBelowStability:
+      return "cyclic slave: AccBound below the stability bound (warning)";
+    case E::kGearRatio1NotTaken:
+      return "cyclic slave: GearRatio1 0, NaN, infinite or too large, old factor kept (warning)";
     case E::kPushByHandControllerEnabled:
       return "push by hand: the axis has its controller enable (the drive holds it)";
     case E::kHliFractOnReferencedAxis:

@@ -10,11 +10,15 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <span>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "nc_core/axis_config.hpp"
 #include "nc_core/cycle_driver.hpp"
+#include "nc_core/scope.hpp"
+#include "nc_core/svg_plot.hpp"
 
 namespace sample_common {
 
@@ -34,6 +38,38 @@ inline void use_lagging_drive(nc::AxisConfig& config, double position_kv) {
   config.drive_time_constant = 0.001;
   config.drive_dead_time = 0.001;
   config.position_kv = position_kv;
+}
+
+// A sample axis: default dynamics, `name`, the lagging drive with `position_kv` (1/s).
+inline nc::AxisConfig lagging_axis(const char* name, double position_kv) {
+  nc::AxisConfig config;
+  config.name = name;
+  use_lagging_drive(config, position_kv);
+  return config;
+}
+
+// The figure of the multi-axis samples: one panel per `signals` entry with one series per axis
+// (`names[i]` drawn in `colours[i]`, 1.5 px), read from the scope's motion signals. After-run.
+struct AxisPanel {
+  const char* id;
+  const char* title;
+  const char* unit;
+  nc::Signal signal;
+};
+inline std::vector<nc::PlotPanel> axis_panels(const nc::Scope& scope,
+                                              std::span<const char* const> names,
+                                              std::span<const char* const> colours,
+                                              std::span<const AxisPanel> signals) {
+  std::vector<nc::PlotPanel> panels;
+  for (const AxisPanel& k : signals) {
+    nc::PlotPanel panel{k.id, k.title, k.unit, {}};
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      panel.series.push_back(
+          {names[i], colours[i], scope.values(scope.find(names[i], k.signal)), 1.5});
+    }
+    panels.push_back(std::move(panel));
+  }
+  return panels;
 }
 
 // Runs until `stopped()` or the timeout; when then `finished()`, runs `settle_time` s longer to

@@ -283,10 +283,7 @@ struct Options {
 };
 
 inline nc::AxisConfig sample_axis_config(const char* name) {
-  nc::AxisConfig config;
-  config.name = name;
-  sample_common::use_lagging_drive(config, 5.0);
-  return config;
+  return sample_common::lagging_axis(name, 5.0);
 }
 
 class GearCouplingSample {
@@ -356,25 +353,14 @@ class GearCouplingSample {
       const std::filesystem::path& dir) const {
     const auto [csv, svg] = sample_common::csv_and_svg(dir, "gear_coupling");
     scope_.write_csv(csv);
-    const char* colours[3] = {"#00008b", "#8b0000", "#006400"};
-    const struct {
-      const char* id;
-      const char* title;
-      const char* unit;
-      nc::Signal signal;
-    } kinds[] = {{"panel-position", "Set position", "mm", nc::Signal::kSetPos},
-                 {"panel-velocity", "Set velocity", "mm/s", nc::Signal::kSetVelo},
-                 {"panel-acceleration", "Set acceleration", "mm/s²", nc::Signal::kSetAcc},
-                 {"panel-couple-state", "CoupleState", "", nc::Signal::kCoupleState}};
-    std::vector<nc::PlotPanel> panels;
-    for (const auto& k : kinds) {
-      nc::PlotPanel panel{k.id, k.title, k.unit, {}};
-      for (int i = 0; i < 3; ++i) {
-        panel.series.push_back(
-            {kNames[i], colours[i], scope_.values(scope_.find(kNames[i], k.signal)), 1.5});
-      }
-      panels.push_back(std::move(panel));
-    }
+    const char* const colours[3] = {"#00008b", "#8b0000", "#006400"};
+    const sample_common::AxisPanel kinds[] = {
+        {"panel-position", "Set position", "mm", nc::Signal::kSetPos},
+        {"panel-velocity", "Set velocity", "mm/s", nc::Signal::kSetVelo},
+        {"panel-acceleration", "Set acceleration", "mm/s²", nc::Signal::kSetAcc},
+        {"panel-couple-state", "CoupleState", "", nc::Signal::kCoupleState}};
+    const std::vector<nc::PlotPanel> panels =
+        sample_common::axis_panels(scope_, kNames, colours, kinds);
     nc::write_svg(svg, nc::svg_plot(scope_.time(), panels,
                                     {"Gear coupling: star (Slave1 3/4, Slave2 -1/2 of the master; "
                                      "override 30 % / 100 %), then cascade (Slave2 -1/2 of "

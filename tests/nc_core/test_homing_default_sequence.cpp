@@ -223,7 +223,7 @@ TEST_CASE("MC_Stop during homing aborts it; Homed stays as it was", "[homing][de
   }
 }
 
-TEST_CASE("losing the controller enable during homing is axis error 0x4356",
+TEST_CASE("losing the controller enable during homing is axis error 0x4260",
           "[homing][default][errors]") {
   kt::Harness h(kt::homing_axis());
   const uint16_t n = h.post(kt::home(plc::MC_DefaultHoming, 0.0));
@@ -232,7 +232,7 @@ TEST_CASE("losing the controller enable during homing is axis error 0x4356",
   kt::set_enables(*h.x, false);
   kt::cam_cycle(h);
   CHECK(h.state_of(n) == CommandState::kError);
-  CHECK(h.answer(n).error_code == kt::id(ErrorCode::kControllerEnableMissing));
+  CHECK(h.answer(n).error_code == 0x4260U);
   CHECK_FALSE(kt::bit(*h.x, plc::kStateHomingBusy));
   CHECK_FALSE(kt::bit(*h.x, plc::kStateHomed));
 }

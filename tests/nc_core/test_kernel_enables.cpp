@@ -1,6 +1,6 @@
 // Controller and feed enables (PlcToNc.ControlDWord, written by MC_Power): Operational, Disabled
 // state with the set position following the actual one, and the axis errors when an enable is
-// taken away during a job (0x4356 controller, 0x4358 / 0x4357 feed plus / minus).
+// taken away during a job (0x4260 controller, 0x4358 / 0x4357 feed plus / minus).
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -28,7 +28,7 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "controller enable removed during a move: error 0x4356, the job fails, the set "
+    "controller enable removed during a move: error 0x4260, the job fails, the set "
     "position follows the actual one",
     "[kernel][enables]") {
   nc::AxisConfig c = kt::seed_axis();
@@ -40,9 +40,10 @@ TEST_CASE(
   h.cycles(500);
   kt::set_enables(*h.x, false);
   h.cycles(1);
-  CHECK(h.x->NcToPlc.ErrorCode == kt::id(ErrorCode::kControllerEnableMissing));
+  CHECK(h.x->NcToPlc.ErrorCode == kt::id(ErrorCode::kControllerEnableLost));
+  CHECK(h.x->NcToPlc.ErrorCode == 0x4260U);
   CHECK(h.answer(job).state == CommandState::kError);
-  CHECK(h.answer(job).error_code == kt::id(ErrorCode::kControllerEnableMissing));
+  CHECK(h.answer(job).error_code == kt::id(ErrorCode::kControllerEnableLost));
   CHECK(kt::axis_state(*h.x) == AxisState::kErrorStop);
   CHECK_FALSE(kt::bit(*h.x, plc::kStateHasJob));
   for (int i = 0; i < 300; ++i) {

@@ -39,13 +39,13 @@ TEST_CASE("the error event is set only in the cycle the error is raised", "[kern
   REQUIRE(a.Mailbox.post(kt::move_absolute(500.0, 1000.0)) != 0);
   for (int i = 0; i < 20; ++i)
     kernel.cycle();
-  // The controller enable gone while the job runs: an axis error (kControllerEnableMissing).
+  // The controller enable gone while the job runs: an axis error (0x4260, kControllerEnableLost).
   a.PlcToNc.ControlDWord = 0;
   kernel.cycle();
-  REQUIRE(kernel.snapshot(0).error == plc::ErrorCode::kControllerEnableMissing);
+  REQUIRE(kernel.snapshot(0).error == plc::ErrorCode::kControllerEnableLost);
   REQUIRE(kernel.snapshot(0).error_event);
   REQUIRE_FALSE(kernel.snapshot(0).controller_enabled);
   kernel.cycle();
-  REQUIRE(kernel.snapshot(0).error == plc::ErrorCode::kControllerEnableMissing);
+  REQUIRE(kernel.snapshot(0).error == plc::ErrorCode::kControllerEnableLost);
   REQUIRE_FALSE(kernel.snapshot(0).error_event);
 }

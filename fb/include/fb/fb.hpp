@@ -11,6 +11,7 @@
 #include "fb/mc_ext_set_point_gen_enable.hpp"
 #include "fb/mc_ext_set_point_gen_feed.hpp"
 #include "fb/mc_gear_in.hpp"
+#include "fb/mc_gear_in_dyn.hpp"
 #include "fb/mc_gear_out.hpp"
 #include "fb/mc_halt.hpp"
 #include "fb/mc_home.hpp"

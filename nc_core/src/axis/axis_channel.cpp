@@ -6,9 +6,10 @@ namespace {
 
 using plc::CommandState;
 
-constexpr plc::ErrorCode kWarningCodes[] = {plc::ErrorCode::kMovementSmallerThanIncrement,
-                                            plc::ErrorCode::kOverrideNotAllowed,
-                                            plc::ErrorCode::kCompensationIncomplete};
+constexpr plc::ErrorCode kWarningCodes[] = {
+    plc::ErrorCode::kMovementSmallerThanIncrement, plc::ErrorCode::kOverrideNotAllowed,
+    plc::ErrorCode::kCompensationIncomplete, plc::ErrorCode::kAccBoundBelowStability,
+    plc::ErrorCode::kGearRatio1NotTaken};
 
 }  // namespace
 

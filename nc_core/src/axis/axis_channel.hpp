@@ -18,6 +18,8 @@ enum class Warning : uint8_t {
   kMovementSmallerThanIncrement,  // 0x4224, a start shorter than one increment
   kOverrideNotAllowed,            // 0x4238, PlcToNc.Override above 100 %: not taken
   kCompensationIncomplete,        // 0x4243, less than D compensated
+  kAccBoundBelowStability,        // 0x4F80, cyclic slave: AccBound below the stability bound
+  kGearRatio1NotTaken,            // 0x4F81, cyclic slave: GearRatio1 not taken
 };
 
 inline uint8_t warning_bit(Warning w) noexcept {

@@ -96,6 +96,9 @@ ErrorCode ServoAxis::handle_now(const plc::Command& command, CouplingPort& port)
     case CommandType::kGearIn:
       code = gear_in(command, port);
       break;
+    case CommandType::kGearInDyn:
+      code = gear_in_dyn(command, port);  // cyclic_slave.cpp
+      break;
     case CommandType::kGearOut:
       code = gear_out(command, port);
       break;
@@ -115,7 +118,6 @@ ErrorCode ServoAxis::handle_now(const plc::Command& command, CouplingPort& port)
       channel_.answer(command.number, CommandState::kDone);
       break;
     default:
-      // MC_GearInDyn comes with a later issue; until then the kernel refuses it.
       code = ErrorCode::kUnknownCommand;
       break;
   }

@@ -37,21 +37,63 @@ bool ServoAxis::refused_while_coupled(CommandType type) noexcept {
   }
 }
 
-ErrorCode ServoAxis::gear_in(const plc::Command& command, CouplingPort& port) noexcept {
-  if (!std::isfinite(command.ratio)) return ErrorCode::kParameterNotFinite;
-  if (command.ratio == 0.0) return ErrorCode::kCouplingFactorZero;
+ErrorCode ServoAxis::check_gear_ratio(double ratio) noexcept {
+  if (!std::isfinite(ratio)) return ErrorCode::kParameterNotFinite;
+  if (ratio == 0.0) return ErrorCode::kCouplingFactorZero;
   // Fuzz finding K6: a ratio of 8.4e301 made the slave's set values overflow (SetAcc inf). With
   // |ratio| <= 1e6 a cascade of three (4 axes) scales the master's values by at most 1e18.
-  if (std::abs(command.ratio) > kMaxGearRatio) return ErrorCode::kGearRatioOutOfRange;
+  if (std::abs(ratio) > kMaxGearRatio) return ErrorCode::kGearRatioOutOfRange;
+  return ErrorCode::kNone;
+}
+
+ErrorCode ServoAxis::check_gear_master(const plc::Command& command,
+                                       CouplingPort& port) const noexcept {
   if (slave_link_.detached) return ErrorCode::kFunctionNotAllowed;  // C7: MC_GearOut first
   if (config_.kind == AxisKind::kEncoder) return ErrorCode::kAxisKindNotAllowed;
   if (command.other_axis < 0 || static_cast<std::size_t>(command.other_axis) >= port.axes.size()) {
     return ErrorCode::kInvalidAxisReference;
   }
+  // A two-speed axis has no set position to follow or to be followed by (seed 004).
+  if (port.axes[static_cast<std::size_t>(command.other_axis)]->two_speed_) {
+    return ErrorCode::kAxisKindNotAllowed;
+  }
+  return ErrorCode::kNone;
+}
+
+ErrorCode ServoAxis::check_new_coupling(uint32_t master_index, CouplingPort& port) const noexcept {
+  if (port.graph.would_loop(index_, master_index)) return ErrorCode::kCouplingLoop;
+  if (channel_.has_error()) return ErrorCode::kAxisInErrorState;
+  if (locked_) return ErrorCode::kMotionCommandsLocked;
+  if (!channel_.controller_enabled()) return ErrorCode::kSlaveNoControllerOrFeedEnable;
+  if (!at_rest_for_coupling() || !port.axes[master_index]->at_rest_for_coupling()) {
+    return ErrorCode::kBusyWhileCoupling;
+  }
+  return ErrorCode::kNone;
+}
+
+bool ServoAxis::couple_new(const plc::Command& command, uint32_t master_index,
+                           CouplingPort& port) noexcept {
+  if (!port.graph.couple(index_, master_index)) return false;  // not reached
+  ServoAxis& master = *port.axes[master_index];
+  ++master.slave_count_;
+  const uint16_t running = job_.active() ? job_.number() : 0;
+  slave_link_.couple(master_index, command.number, command.ratio, set_.p, master.set_.p);
+  // A held offset of a compensation that ended in the last cycle is in set_.p, so in the offset.
+  stack_.drop_held();
+  channel_.take_over(command.number, running);
+  monitors_.reset_windows();
+  return true;
+}
+
+ErrorCode ServoAxis::gear_in(const plc::Command& command, CouplingPort& port) noexcept {
+  if (const ErrorCode code = check_gear_ratio(command.ratio); code != ErrorCode::kNone) {
+    return code;
+  }
+  if (const ErrorCode code = check_gear_master(command, port); code != ErrorCode::kNone) {
+    return code;
+  }
   const auto master_index = static_cast<uint32_t>(command.other_axis);
   ServoAxis& master = *port.axes[master_index];
-  // A two-speed axis has no set position to follow or to be followed by (seed 004).
-  if (master.two_speed_) return ErrorCode::kAxisKindNotAllowed;
   if (slave_link_.coupled) {
     // A new rising edge for the same slave and master: the factor changes at once with the
     // slave's position continuous (SPEC C2). Another master needs MC_GearOut first.
@@ -62,22 +104,11 @@ ErrorCode ServoAxis::gear_in(const plc::Command& command, CouplingPort& port) no
     channel_.answer_current(CommandState::kReached);
     return ErrorCode::kNone;
   }
-  if (port.graph.would_loop(index_, master_index)) return ErrorCode::kCouplingLoop;
-  if (channel_.has_error()) return ErrorCode::kAxisInErrorState;
-  if (locked_) return ErrorCode::kMotionCommandsLocked;
-  if (!channel_.controller_enabled()) return ErrorCode::kSlaveNoControllerOrFeedEnable;
-  if (!at_rest_for_coupling() || !master.at_rest_for_coupling()) {
-    return ErrorCode::kBusyWhileCoupling;
+  if (const ErrorCode code = check_new_coupling(master_index, port); code != ErrorCode::kNone) {
+    return code;
   }
-  if (!port.graph.couple(index_, master_index)) return ErrorCode::kCouplingLoop;  // not reached
-  ++master.slave_count_;
-  const uint16_t running = job_.active() ? job_.number() : 0;
-  slave_link_.couple(master_index, command.number, command.ratio, set_.p, master.set_.p);
-  // A held offset of a compensation that ended in the last cycle is in set_.p, so in the offset.
-  stack_.drop_held();
-  channel_.take_over(command.number, running);
+  if (!couple_new(command, master_index, port)) return ErrorCode::kCouplingLoop;
   channel_.answer_current(CommandState::kReached);  // InGear at once: the coupling is logical
-  monitors_.reset_windows();
   return ErrorCode::kNone;
 }
 

@@ -103,13 +103,15 @@ void ServoAxis::phase_monitors(AxisSnapshot& snapshot) noexcept {
 }
 
 void ServoAxis::check_enables() noexcept {
+  const bool enabled = channel_.controller_enabled();
+  const bool lost = enable_seen_ && !enabled;
+  enable_seen_ = enabled;
   if (update_by_hand()) return;  // C8 case 2: the group follows this master pushed by hand
-  if (!channel_.controller_enabled()) {
-    // Losing the controller enable during a job is an axis error; there is no ramp to run (the
-    // drive is off), so the job ends here and the set values follow the actual position.
-    if ((job_.active() && job_.kind() != JobKind::kEmergencyStop) || homing_.active()) {
-      raise_error(ErrorCode::kControllerEnableMissing);
-    }
+  if (!enabled) {
+    // Losing the controller enable while a command runs is an axis error (enable_loss.cpp);
+    // there is no ramp to run (the drive is off), so the job ends here and the set values follow
+    // the actual position.
+    if (enable_loss_is_error(lost)) raise_error(ErrorCode::kControllerEnableLost);
     job_.clear();
     return;
   }
@@ -161,6 +163,7 @@ void ServoAxis::generate_set_values(std::span<const AxisSnapshot> snapshots) noe
     }
     case SetValueSource::kSlaveLink: {
       const AxisSnapshot& master = snapshots[slave_link_.master];
+      if (slave_link_.cyclic) step_cyclic_factor(master);  // cyclic_slave.cpp
       base_ = slave_link_.sample(master, set_.p);
       set_jerk_ = slave_link_.factor * master.set_jerk;
       break;

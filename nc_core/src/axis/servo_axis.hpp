@@ -142,6 +142,11 @@ class ServoAxis {
 
   // --- servo_axis.cpp ---
   void check_enables() noexcept;
+  // --- enable_loss.cpp (issue 10 item 4) ---
+  // The controller enable is missing in this cycle (`lost`: it was there in the last one): true
+  // when that is the axis error 0x4260, i.e. a command runs (a job, a homing, or the coupling of
+  // a slave). The one place that decides it.
+  bool enable_loss_is_error(bool lost) const noexcept;
   // Step b: the basic source's set values, then the superposition stack on top.
   void generate_set_values(std::span<const AxisSnapshot> snapshots) noexcept;
   // The one basic source of this cycle (set_value_source.hpp).
@@ -193,6 +198,24 @@ class ServoAxis {
 
   // --- coupling.cpp (C1, C3, C4; seed 000 §3.2.2-3.2.3) ---
   ErrorCode gear_in(const plc::Command& command, CouplingPort& port) noexcept;
+  // The checks shared by MC_GearIn and MC_GearInDyn, in the order of docs/behaviour.md "Slave
+  // axes": the factor (finite, not 0, |factor| <= 1e6); the slave's kind and the master index;
+  // for a new coupling: loop, error, lock, enable, both at rest.
+  static ErrorCode check_gear_ratio(double ratio) noexcept;
+  ErrorCode check_gear_master(const plc::Command& command, CouplingPort& port) const noexcept;
+  ErrorCode check_new_coupling(uint32_t master_index, CouplingPort& port) const noexcept;
+  // A checked new coupling: graph, counts, slave link (linear, factor command.ratio), answered
+  // kActive. False only when the graph refuses (a loop; checked before).
+  bool couple_new(const plc::Command& command, uint32_t master_index, CouplingPort& port) noexcept;
+  // --- cyclic_slave.cpp (C6; seed 000 §3.3; MC_GearInDyn) ---
+  ErrorCode gear_in_dyn(const plc::Command& command, CouplingPort& port) noexcept;
+  // The largest acceleration the axis's set values can have (mm/s²): max(A+, A-) of a master,
+  // through its cascade for a slave (|factor| × its master's; a cyclic slave at least AccBound).
+  double max_acceleration(const CouplingPort& port) const noexcept;
+  // Phase b of a cyclic slave, before its sample: PlcToNc.GearRatio1 read (not taken when 0,
+  // NaN, inf or above 1e6: warning 0x4F81) and the factor in force moved towards it within
+  // AccBound (the smoothing law of docs/behaviour.md "Cyclic slave").
+  void step_cyclic_factor(const AxisSnapshot& master) noexcept;
   ErrorCode gear_out(const plc::Command& command, CouplingPort& port) noexcept;
   // Online decoupling: the levels from the head of this slave's cascade down to it, and the
   // head. False (0x424D) when the head runs no PTP job or the cascade is too deep.
@@ -337,6 +360,7 @@ class ServoAxis {
   bool locked_ = false;  // MC_Stop: motion commands refused until kStopRelease
   bool has_been_stopped_ = false;
   bool error_event_ = false;  // an error was raised in this cycle
+  bool enable_seen_ = false;  // the controller enable of the last check_enables()
   // C7 / C8 (error_propagation.cpp).
   PropagationDelay propagation_{};
   bool receiving_group_error_ = false;  // raise_error() called by group_error()

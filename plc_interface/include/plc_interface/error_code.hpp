@@ -43,7 +43,8 @@ enum class ErrorCode : uint32_t {
   kCompensationStopNotAllowed = 0x4258,
   kBusyWhileCoupling = 0x425A,
   kSlaveStartParameterWrong = 0x425B,
-  kControllerEnableMissingGroup = 0x4260,
+  // The axis or a coupled slave lost its controller enable while executing a command.
+  kControllerEnableLost = 0x4260,
   kOverrideTypeInvalid = 0x426C,
   kActivationPositionOverrun = 0x426D,
   kCompensationLengthInvalid = 0x4270,
@@ -55,7 +56,7 @@ enum class ErrorCode : uint32_t {
   kDecouplingTypeInvalid = 0x428D,
   kDecouplingVelocityInvalid = 0x428E,
   kMotionCommandsLocked = 0x42EF,
-  kControllerEnableMissing = 0x4356,
+  kControllerEnableMissing = 0x4356,  // HLI target's drive, two-speed axis (not a gear axis)
   kFeedEnableMinusMissing = 0x4357,
   kFeedEnablePlusMissing = 0x4358,
   kSetVelocityNotAllowed = 0x4359,
@@ -90,6 +91,9 @@ enum class ErrorCode : uint32_t {
   kHomingSyncPulseNotFound = 0x4F22,  // cam edge or sync pulse not within the search distance
   kHomingAxisMoving = 0x4F23,         // MC_Direct while the axis has a job or moves
   kBufferFull = 0x4F60,               // a buffered command already waits on this axis
+  // Cyclic slave (MC_GearInDyn; ncsdk's range 0x4F80 … 0x4F8F), both warnings.
+  kAccBoundBelowStability = 0x4F80,  // AccBound < max|factor| × the master's max acceleration
+  kGearRatio1NotTaken = 0x4F81,      // PlcToNc.GearRatio1 0, NaN, inf or above 1e6: old factor kept
   // Error propagation and actual-value coupling (SPEC C7, C8; ncsdk's range 0x4F90 … 0x4F9F).
   kPushByHandControllerEnabled = 0x4F90,  // Kernel::push_by_hand on an axis that is enabled
 
@@ -112,7 +116,8 @@ std::string_view error_text(uint32_t code) noexcept;
 // True for codes that are warnings (the command still runs).
 constexpr bool is_warning(ErrorCode code) noexcept {
   return code == ErrorCode::kMovementSmallerThanIncrement ||
-         code == ErrorCode::kCompensationIncomplete;
+         code == ErrorCode::kCompensationIncomplete || code == ErrorCode::kAccBoundBelowStability ||
+         code == ErrorCode::kGearRatio1NotTaken;
 }
 
 }  // namespace plc

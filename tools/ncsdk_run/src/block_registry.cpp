@@ -102,6 +102,7 @@ using fb::MC_AbortSuperposition;
 using fb::MC_ExtSetPointGenDisable;
 using fb::MC_ExtSetPointGenEnable;
 using fb::MC_GearIn;
+using fb::MC_GearInDyn;
 using fb::MC_GearOut;
 using fb::MC_Halt;
 using fb::MC_MoveAbsolute;
@@ -208,6 +209,13 @@ constexpr auto kGearIn = std::array<Port, 13>{NCSDK_IN(MC_GearIn, Execute),
                                               NCSDK_OUT(MC_GearIn, CommandAborted),
                                               NCSDK_OUT(MC_GearIn, Error),
                                               NCSDK_OUT(MC_GearIn, ErrorID)};
+constexpr auto kGearInDyn = std::array<Port, 12>{
+    NCSDK_IN(MC_GearInDyn, Enable),       NCSDK_IN(MC_GearInDyn, GearRatio),
+    NCSDK_IN(MC_GearInDyn, Acceleration), NCSDK_IN(MC_GearInDyn, Deceleration),
+    NCSDK_IN(MC_GearInDyn, Jerk),         NCSDK_IN(MC_GearInDyn, BufferMode),
+    NCSDK_OUT(MC_GearInDyn, InGear),      NCSDK_OUT(MC_GearInDyn, Busy),
+    NCSDK_OUT(MC_GearInDyn, Active),      NCSDK_OUT(MC_GearInDyn, CommandAborted),
+    NCSDK_OUT(MC_GearInDyn, Error),       NCSDK_OUT(MC_GearInDyn, ErrorID)};
 constexpr auto kGearOut =
     join(std::array<Port, 1>{NCSDK_IN(MC_GearOut, Execute)}, status_outputs<MC_GearOut>());
 constexpr auto kExtSetPointGenFeed = std::array<Port, 5>{
@@ -259,8 +267,8 @@ std::unique_ptr<Block> make() {
   return std::make_unique<Holder<B>>();
 }
 
-// The axes a block is called with: the coupling blocks with kMasterSlave (MC_GearIn; MC_GearInDyn
-// when fb has it) and kSlave (MC_GearOut); Holder calls a two-axis block with (master, slave).
+// The axes a block is called with: the coupling blocks with kMasterSlave (MC_GearIn,
+// MC_GearInDyn) and kSlave (MC_GearOut); Holder calls a two-axis block with (master, slave).
 constexpr std::string_view kOneAxis[] = {"axis"};
 constexpr std::string_view kMasterSlave[] = {"master", "slave"};
 constexpr std::string_view kSlave[] = {"slave"};
@@ -283,6 +291,7 @@ const BlockType kTypes[] = {
     {"MC_ExtSetPointGenDisable", kExtSetPointGenDisable, kOneAxis, &make<MC_ExtSetPointGenDisable>},
     {"MC_ExtSetPointGenFeed", kExtSetPointGenFeed, kOneAxis, &make<ExtSetPointGenFeed>},
     {"MC_GearIn", kGearIn, kMasterSlave, &make<MC_GearIn>},
+    {"MC_GearInDyn", kGearInDyn, kMasterSlave, &make<MC_GearInDyn>},
     {"MC_GearOut", kGearOut, kSlave, &make<MC_GearOut>},
     {"MC_ReadStatus", kReadStatus, kOneAxis, &make<MC_ReadStatus>},
     {"MC_ReadActualPosition", kReadActualPosition, kOneAxis, &make<MC_ReadActualPosition>},

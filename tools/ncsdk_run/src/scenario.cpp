@@ -582,6 +582,7 @@ Scenario::Scenario(const json& axes, const json& timeline, std::string axes_file
       s.scope.add_signal(*slot.ref, slot.name, static_cast<nc::Signal>(k));
     }
     s.scope.add_variable(&slot.ref->PlcToNc.GearRatio1, slot.name + ".GearRatio1", "");
+    s.scope.add_variable(&slot.ref->NcToPlc.GearRatio, slot.name + ".GearRatio", "");
     s.axes.push_back(std::move(slot));
   }
 
