@@ -9,7 +9,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
-#include <cstdlib>
 #include <string>
 
 #include "byte_reader.hpp"
@@ -104,15 +103,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
   const pc::Finding finding =
       position ? pc::check_passing_profile(profile, start, goal, v_end, keep, {}, relief)
                : pc::check_velocity_profile(profile, start, goal, keep, {}, relief);
-  // Open finding P17 (docs/reliability.md): the end-velocity call with limits near 1e-8 breaks
-  // continuity by up to twice the 1e-9 tolerance. NCSDK_FUZZ_PLANNER_OPEN_P17=1 (set on the
-  // CTest timed run) lets a continuity miss of the end-velocity call within 4 times its bound
-  // pass, so that CI does not stop on it while it is open; by hand it is reported.
-  static const bool tolerate_p17 = std::getenv("NCSDK_FUZZ_PLANNER_OPEN_P17") != nullptr;
-  if (tolerate_p17 && passing && finding.check == pc::Check::kContinuity &&
-      std::fabs(finding.value) <= 4.0 * finding.bound) {
-    return 0;
-  }
   if (!finding.ok()) report(kind, start, goal, v_end, limits, pc::to_string(finding));
   return 0;
 }

@@ -1,8 +1,9 @@
 // No allocation in plan_position's end-velocity call on the paths branch `planner` added (brief:
 // real-time discipline): the first-switch scan, the hold at v_end after a rounding jump, the
-// power-law first point on a long piece, and the refusal of a start far above the bound its ramp
-// ends at (fuzz findings P9, P10, P12, P14; issue 14 item 1), and 2 000 random problems with
-// v_end. A counting global operator new counts 0. Runs only in the plain build.
+// power-law first point on a long piece, the search past a flat stretch of E on a push hold, and
+// the refusal of a start far above the bound its ramp ends at (fuzz findings P9, P10, P12, P14,
+// P17; issue 14 item 1), and 2 000 random problems with v_end. A counting global operator new
+// counts 0. Runs only in the plain build.
 #include <catch2/catch.hpp>
 
 #include <vector>
@@ -45,6 +46,11 @@ TEST_CASE("plan_position with an end velocity allocates nothing on its new paths
        0.071945387924975804,
        2.033291143442896,
        {3.2898764527582767, 6546.635221418459, 20454.983581909062, 3.3288370245999088}},
+      // P17: the search past a flat stretch of E on a push hold.
+      {{6.5715143469463669e-110, 7.041529113169559e-09, 9.9741677046594516e-43},
+       7.0415291131643709e-09,
+       1.1061837756334599e-08,
+       {1982014.243136033, 7.0415291132253573e-09, 7.0415291131581728e-09, 1392190.2470443724}},
       // P9: refused (0x4F70).
       {{0.0, 0.12012095731847509, -0.6952196903821245},
        0.00047679222188957981,

@@ -1,7 +1,8 @@
 // plan_position with an end velocity where its switch point is hard to find (fuzz findings P10,
-// P12, P14, P15; docs/reliability.md): the root of E(tau) = target inside a jump that the velocity
-// change's rounding tolerance makes, a root far below the end of a very long push piece, and the
-// first of two crossings inside one push piece (issue 14 item 1, Bellman consistency).
+// P12, P14, P15, P17; docs/reliability.md): the root of E(tau) = target inside a jump that the
+// velocity change's rounding tolerance makes, a root far below the end of a very long push piece,
+// the first of two crossings inside one push piece (issue 14 item 1, Bellman consistency) and a
+// root past a stretch of the push where E(tau) is flat.
 // Each profile keeps the planner tests' contract (profile_checks.hpp), with the numbers found.
 #include <catch2/catch.hpp>
 
@@ -128,4 +129,34 @@ TEST_CASE("an acceleration left on the final curve within rounding ramps to 0 at
   CHECK(prof.segment(1).j == -l.jerk);
   CHECK(prof.segment(1).duration == Approx(1.1642301714750205e-10).epsilon(1e-9));
   CHECK(prof.duration() == Approx(2.3284603429500409e-10).epsilon(1e-9));
+}
+
+TEST_CASE("a push hold along which E(tau) stays flat is searched from the end of that stretch",
+          "[profile][end_velocity]") {
+  // P17 (seed 1791): from v = 7.04e-9 to a target 7.04e-9 ahead passed at v_end = 1.1e-8, with
+  // A+ ~ A- ~ 7.04e-9 and J = 1.4e6. The change from the push's hold (towards V, 2.8e14 s long)
+  // to v_end holds the same A+ until v_end, so E(tau) stayed at E(0), 1.87e-9 short of the
+  // target, for the first 0.571 s; the search ended inside that flat stretch, and continuity
+  // broke by 1.87e-9. Now the search starts where the flat stretch ends: the velocity
+  // overshoots v_end to the peak that covers the distance, then comes back at A-.
+  const Limits l{1982014.243136033, 7.0415291132253573e-09, 7.0415291131581728e-09,
+                 1392190.2470443724};
+  const KinematicState s{6.5715143469463669e-110, 7.041529113169559e-09, 9.9741677046594516e-43};
+  const double target = 7.0415291131643709e-09;
+  const double v_end = 1.1061837756334599e-08;
+  const Profile prof = planned(s, target, v_end, l);
+  // The ramps last 5e-15 s: to 1e-6, a rise at A to v_peak and a fall at A back to v_end cover
+  // the distance D, (v_peak^2 - v^2) / 2A + (v_peak^2 - v_end^2) / 2A = D.
+  const double a = l.acceleration;
+  const double d = target - s.p;
+  const double v_peak = std::sqrt(a * d + 0.5 * (s.v * s.v + v_end * v_end));
+  REQUIRE(prof.segment_count() == 5);
+  CHECK(prof.segment(3).v == Approx(v_peak).epsilon(1e-6));
+  CHECK(prof.segment(3).v == Approx(1.1642887341697178e-08).epsilon(1e-12));
+  CHECK(prof.segment(3).a == -l.deceleration);
+  const double expected = (v_peak - s.v) / a + (v_peak - v_end) / a;
+  CHECK(prof.duration() == Approx(expected).epsilon(1e-6));
+  CHECK(prof.duration() == Approx(0.73597761658926975).epsilon(1e-9));
+  // Shorter than reaching v_end at A+ and holding it for the 1.87e-9 left (0.740 s).
+  CHECK(prof.duration() < (v_end - s.v) / a + 1.8735378199693483e-09 / v_end - 1e-3);
 }

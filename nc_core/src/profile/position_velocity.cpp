@@ -30,6 +30,9 @@ using detail::Piece;
 constexpr double kRootTolerance = 1e-13;
 // Points of the bounded scan for a first switch inside a push piece that slows the motion.
 constexpr int kScanPoints = 4;
+// Relative to |v_end|: an overshoot of v_end below this is no switch point past a flat stretch
+// of E (the hold at v_end takes the same time to second order in it).
+constexpr double kSwitchOvershoot = 1e-6;
 
 // Closes on (target, v_end, 0), holding v_end past the end (profile/finish.hpp).
 Profile finish_moving(const KinematicState& start, double target, double v_end, double dir,
@@ -182,6 +185,39 @@ Profile plan_position(const KinematicState& start, double target, double target_
         }
       }
     }
+    // Whether the search's first point follows the power law from lo (below).
+    bool power_first = lo == 0.0;
+    if (found && jerk == 0.0 && lo == 0.0 && s.a > 0.0) {
+      // A hold whose change to ve begins with the same hold (the push and the change accelerate
+      // alike until the change's final ramp): E(tau) is E(0) all along that hold, and a flat
+      // stretch gives the secant nothing to go by (fuzz finding P17: A± = 7e-9, J = 1.4e6, the
+      // push's hold lasted 2.8e14 s, E was flat over its first 0.571 s and the root at 0.65 s
+      // lay beyond; 200 steps ended inside the flat stretch and continuity broke by 1.87e-9).
+      // Past that stretch (and past the change's rounding window, where an overshoot of ve is
+      // taken as none) E rises again: if it is still short of the goal there by more than an
+      // overshoot of rounding size covers, the bracket starts there. If not, the search goes on
+      // as before (P10, P12: the hold at ve below).
+      detail::PieceBuffer<detail::kMaxChangePieces> along_room;
+      const int n_along = detail::velocity_change(s.v, s.a, ve, bounds, along_room.items);
+      if (n_along > 0 && along_room.items[0].j == 0.0) {
+        const double t_past = along_room.items[0].t + 16.0 * detail::kDecisionTolerance *
+                                                          std::max(std::abs(s.v), std::abs(ve)) /
+                                                          s.a;
+        if (t_past < hi) {
+          const double r_past = f(t_past);
+          if (std::isnan(r_past)) return Profile::failure(ErrorCode::kPlannerNoSolution);
+          // The overshoot of ve that covers the shortfall (to first order, the distance grows at
+          // |ve| for the time up and back): one of rounding size is no switch point (P12, the
+          // hold at ve below takes the same time to 1e-12), a larger one is.
+          const double a_back = ve > 0.0 ? bounds.am : bounds.ap;
+          const double overshoot = -r_past / (std::abs(ve) * (1.0 / s.a + 1.0 / a_back));
+          if (r_past < 0.0 && overshoot > kSwitchOvershoot * std::abs(ve)) {
+            lo = t_past;
+            r_lo = r_past;
+          }
+        }
+      }
+    }
     if (found) {
       // The switch from push to change lies in [lo, hi]: E(tau) - goal changes sign on it.
       double w_lo = r_lo, w_hi = r_hi;  // the Illinois weights of the bracket's ends
@@ -199,9 +235,9 @@ Profile plan_position(const KinematicState& start, double target, double target_
         // not reach the root (fuzz finding P14: a hold at A+ = 7.6e-6 towards V = 1000 lasts
         // 1.3e8 s, the root lay at 0.051 s, the search stopped at 3.93 s).
         double x = lo + (hi - lo) * (w_lo / (w_lo - w_hi));
-        if (iter == 0 && lo == 0.0) {
+        if (iter == 0 && power_first) {
           const double q = std::sqrt(std::clamp(r_lo / (r_lo - r_hi), 0.0, 1.0));
-          x = hi * (jerk == 0.0 ? q : std::sqrt(q));
+          x = lo + (hi - lo) * (jerk == 0.0 ? q : std::sqrt(q));
         }
         if (!(x > lo && x < hi) || iter % 8 == 7) x = 0.5 * (lo + hi);
         const double fx = f(x);
@@ -231,13 +267,16 @@ Profile plan_position(const KinematicState& start, double target, double target_
         // end and holds ve for the rest (the same distance as the dip to within the overshoot's
         // share, about 1e-13 of the time).
         double r = x.p + detail::pieces_distance(x.v, x.a, change, n_change) - goal;
-        const double r_tol = 1e-12 * (std::abs(goal) + std::abs(r + goal));
+        double r_tol = 1e-12 * (std::abs(goal) + std::abs(r + goal));
         if (r > r_tol && tau != lo) {
           tau = lo;
           x = detail::advance(s, jerk, tau);
           n_change = detail::velocity_change(x.v, x.a, ve, bounds, change);
           if (n_change < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
           r = x.p + detail::pieces_distance(x.v, x.a, change, n_change) - goal;
+          // The tolerance of this end's own residual (P17: the one of a search that ended far
+          // beyond the goal, 5e-7 there, let a shortfall of 1.9e-9 pass without the hold).
+          r_tol = 1e-12 * (std::abs(goal) + std::abs(r + goal));
         }
         if (r < -r_tol && n_change < detail::kMaxChangePieces) {
           change[n_change++] = Piece{-r / ve, 0.0, 0.0, ve};
