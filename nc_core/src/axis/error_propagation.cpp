@@ -12,7 +12,6 @@ namespace nc::detail {
 using plc::CommandState;
 
 void ServoAxis::begin_error_propagation() noexcept {
-  if (receiving_group_error_) return;  // the group's reaction, not an error of this axis
   const bool in_group = slave_link_.coupled || slave_link_.detached || slave_count_ > 0;
   const bool delayed = config_.error_propagation_mode == ErrorPropagation::kDelayed && in_group &&
                        config_.kind != AxisKind::kTwoSpeed;

@@ -310,7 +310,7 @@ void ServoAxis::finish_job() noexcept {
   }
 }
 
-void ServoAxis::raise_error(ErrorCode code) noexcept {
+void ServoAxis::raise_error(ErrorCode code, bool own) noexcept {
   if (!channel_.raise(code)) return;  // the first error stays until reset
   error_event_ = true;
   ++errors_raised_;
@@ -327,7 +327,7 @@ void ServoAxis::raise_error(ErrorCode code) noexcept {
   drop_buffer(CommandState::kError, plc::to_id(code));  // a waiting command fails with the axis
   // The compensation fails with the axis; external generation is switched off (seed 000 §2.6).
   fold_superpositions(CommandState::kError, code);
-  begin_error_propagation();  // C7: DELAYED, a slave leaves its master here
+  if (own) begin_error_propagation();  // C7: DELAYED, a slave leaves its master here
   // A coupled slave's motion is its master's: it goes on following (group reactions: SPEC C7).
   if (slave_link_.coupled) return;
   if (!channel_.controller_enabled()) {
@@ -350,9 +350,7 @@ void ServoAxis::raise_error(ErrorCode code) noexcept {
 }
 
 void ServoAxis::group_error(ErrorCode code) noexcept {
-  receiving_group_error_ = true;  // not this axis's own error: nothing propagates from it
-  raise_error(code);
-  receiving_group_error_ = false;
+  raise_error(code, false);  // not this axis's own error: nothing propagates from it
 }
 
 void ServoAxis::reset_error() noexcept {

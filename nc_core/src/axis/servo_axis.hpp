@@ -155,8 +155,9 @@ class ServoAxis {
   void run_monitors() noexcept;
   void finish_job() noexcept;
   // The axis goes into error: the running job fails with `code`, and the set values ramp down
-  // on the emergency deceleration and jerk (SPEC A6). The first error is kept.
-  void raise_error(ErrorCode code) noexcept;
+  // on the emergency deceleration and jerk (SPEC A6). The first error is kept. `own`: the axis's
+  // own error, which starts its group reaction (SPEC C7); false for the group's reaction itself.
+  void raise_error(ErrorCode code, bool own = true) noexcept;
   void reset_error() noexcept;
 
   // --- override.cpp (B3 override, seed 000 §2.2) ---
@@ -363,10 +364,9 @@ class ServoAxis {
   bool enable_seen_ = false;  // the controller enable of the last check_enables()
   // C7 / C8 (error_propagation.cpp).
   PropagationDelay propagation_{};
-  bool receiving_group_error_ = false;  // raise_error() called by group_error()
-  bool group_ready_ = false;            // see set_group_ready()
-  bool by_hand_ = false;                // case 2 in force (follows_by_hand() latched)
-  double hand_velocity_ = 0.0;          // push_by_hand(), mm/s
+  bool group_ready_ = false;    // see set_group_ready()
+  bool by_hand_ = false;        // case 2 in force (follows_by_hand() latched)
+  double hand_velocity_ = 0.0;  // push_by_hand(), mm/s
   ActualValueFilter actual_filter_{};
   uint32_t errors_raised_ = 0;
 

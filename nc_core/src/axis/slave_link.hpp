@@ -3,13 +3,12 @@
 //
 // Each cycle the slave reads its master's AxisSnapshot of the SAME cycle (the kernel computes
 // masters first, CouplingGraph::order()) and takes
-//   p = factor · master p + offset,  v = factor · master v,  a = factor · master a (+ rate · master
-//   v
-// for a cyclic slave, rate = d factor / dt). A cyclic slave (MC_GearInDyn) moves its factor in
-// force towards the PLC's commanded one with set_factor(); the offset is re-set with it so that
-// the slave's position is continuous: offset = slave p(k−1) − factor(k) · master p(k−1), so it
-// moves factor(k) · (master p(k) − master p(k−1)) in that cycle. Plain data; cycle functions only
-// (noexcept, no allocation).
+//   p = factor · master p + offset,  v = factor · master v,  a = factor · master a
+// (+ rate · master v for a cyclic slave, rate = d factor / dt). A cyclic slave (MC_GearInDyn)
+// moves its factor in force towards the PLC's commanded one with set_factor(); the offset is
+// re-set with it so that the slave's position is continuous: offset = slave p(k−1) − factor(k) ·
+// master p(k−1), so it moves factor(k) · (master p(k) − master p(k−1)) in that cycle. Plain data;
+// cycle functions only (noexcept, no allocation).
 #pragma once
 
 #include <cstdint>
