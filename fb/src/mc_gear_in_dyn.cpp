@@ -1,5 +1,7 @@
 #include "fb/mc_gear_in_dyn.hpp"
 
+#include "gear_command.hpp"
+
 namespace fb {
 
 void MC_GearInDyn::operator()(const plc::AXIS_REF& master, plc::AXIS_REF& slave) noexcept {
@@ -9,15 +11,7 @@ void MC_GearInDyn::operator()(const plc::AXIS_REF& master, plc::AXIS_REF& slave)
   if (Enable) decoupling_ = false;
   const detail::ExecuteOutputs in = couple_(Enable, slave, [this, &master]() noexcept {
     if (BufferMode != MC_Aborting) return detail::refuse(plc::ErrorCode::kBufferModeNotSupported);
-    detail::Start start;
-    start.command.type = plc::CommandType::kGearInDyn;
-    start.command.ratio = GearRatio;
-    start.command.other_axis = master.NcToPlc.AxisIndex;
-    start.command.acceleration = Acceleration;
-    start.command.deceleration = Deceleration;
-    start.command.jerk = Jerk;
-    start.command.buffer_mode = BufferMode;
-    return start;
+    return detail::gear_start(*this, plc::CommandType::kGearInDyn, GearRatio, master);
   });
   if (falling && in.busy) decoupling_ = true;
   const detail::ExecuteOutputs out = decouple_(decoupling_, slave, []() noexcept {

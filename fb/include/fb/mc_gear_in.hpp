@@ -3,8 +3,9 @@
 //
 // Execute-type block (rules in fb/detail/execute_block.hpp); the command goes to the slave's
 // mailbox with the master's NcToPlc.AxisIndex. InGear (and Busy, Active) from the cycle the NC
-// coupled the axes on, for as long as they stay coupled; MC_GearOut ends the coupling (the block
-// is then no longer Busy, with no result shown). Another MC_GearIn for the same slave takes over
+// coupled the axes on, for as long as they stay coupled and the slave has no error (an error:
+// Error with its ErrorID; the coupling stays); MC_GearOut ends the coupling (the block is then
+// no longer Busy, with no result shown). Another MC_GearIn for the same slave takes over
 // (this one: CommandAborted); so does this one after its Execute fell and rose again while
 // InGear (the documented exception to "a rising edge while Busy starts nothing"): a new command
 // with the new ratio, InGear again once the NC has taken it (the next NC cycle). RatioDenominator 0

@@ -324,6 +324,11 @@ void ServoAxis::raise_error(ErrorCode code, bool own) noexcept {
     }
     homing_.clear();
   }
+  // A slave's MC_GearIn / MC_GearInDyn fails with the axis (it is no longer InGear); the link
+  // itself stays until MC_GearOut (SPEC C7).
+  if (channel_.runs(slave_link_.command)) {
+    channel_.answer_current(CommandState::kError, plc::to_id(code));
+  }
   drop_buffer(CommandState::kError, plc::to_id(code));  // a waiting command fails with the axis
   // The compensation fails with the axis; external generation is switched off (seed 000 §2.6).
   fold_superpositions(CommandState::kError, code);
