@@ -271,10 +271,10 @@ inline Finding check_limits(const nc::Profile& prof, const nc::Limits& l, const 
     if (std::fabs(s.j) > j_max) return {Check::kJerk, i, s.t0, s.j, l.jerk};
     // Evaluation points: the ends, zeros of v, the zero of a, the kink of the relief envelope.
     std::array<double, 8> pts{};
-    int m = 0;
+    std::size_t m = 0;
     pts[m++] = 0.0;
     pts[m++] = d;
-    m += detail::velocity_zeros(s, d, pts.data() + m);
+    m += static_cast<std::size_t>(detail::velocity_zeros(s, d, pts.data() + m));
     if (s.j != 0.0) {
       const double tau = -s.a / s.j;
       if (tau > 0.0 && tau < d) pts[m++] = tau;
@@ -288,11 +288,11 @@ inline Finding check_limits(const nc::Profile& prof, const nc::Limits& l, const 
       if (tk2 > 0.0 && tk2 < d) pts[m++] = tk2;
     }
     // At most 7 points: a plain insertion sort (std::sort trips GCC's -Warray-bounds here).
-    for (int x = 1; x < m; ++x)
-      for (int y = x; y > 0 && pts[y - 1] > pts[y]; --y)
+    for (std::size_t x = 1; x < m; ++x)
+      for (std::size_t y = x; y > 0 && pts[y - 1] > pts[y]; --y)
         std::swap(pts[y - 1], pts[y]);
     // Velocity at every point (covers the extremum where a crosses 0).
-    for (int k = 0; k < m; ++k) {
+    for (std::size_t k = 0; k < m; ++k) {
       const nc::KinematicState x = advance(s, pts[k]);
       const double av = std::fabs(x.v);
       if (!speed_inside) {
@@ -307,7 +307,7 @@ inline Finding check_limits(const nc::Profile& prof, const nc::Limits& l, const 
       if (av > v_lim) return {Check::kVelocity, i, s.t0 + pts[k], x.v, l.velocity};
     }
     // Acceleration on each piece with fixed signs of v and a: linear, so its ends bound it.
-    for (int k = 0; k + 1 < m; ++k) {
+    for (std::size_t k = 0; k + 1 < m; ++k) {
       const double ta = pts[k];
       const double tb = pts[k + 1];
       if (tb <= ta) continue;
