@@ -141,3 +141,43 @@ TEST_CASE("a stop re-plans from the start of its last ramp to exactly that ramp"
   });
   CHECK(worst <= 1e-9);
 }
+
+// Fuzz finding P19: a plan to rest from v = 7.2e-9 mm/s with a = -7.0e-9 mm/s² (twice A-, against
+// the motion) to a target 7.0e-9 mm ahead, A- = 3.5e-9, J = 3.5e-9. The push's first ramp (a at
+// +J) is the stop's own ramp back to A-, so the stop point stays where it is for the first 1.01 s
+// of the push; the root search started from tau = 0, alternated between both ends of its bracket
+// for 100 steps and stopped at 1.46 s, 2.1e-9 short of the goal (continuity broken by 2.1e-9).
+// The search now starts where that flat stretch ends: the switch lies at 2.656 s.
+TEST_CASE("a plan to rest from an acceleration beyond A- searches its switch past the flat stretch",
+          "[profile][regression]") {
+  const KinematicState start{6.5714319085850565e-110, 7.1604517895519803e-09,
+                             -7.041529123769967e-09};
+  const double target = 7.0415289535752134e-09;
+  const Limits l{164761066496.47064, 2.0574137664720906e-06, 3.4925699845285376e-09,
+                 3.5079210647381842e-09};
+  const Profile prof = nc::plan_position(start, target, l);
+  REQUIRE(prof.ok());
+  profile_checks::StartRelief relief;
+  relief.over_acceleration = true;
+  const profile_checks::Finding f =
+      profile_checks::check_position_profile(prof, start, target, l, {}, relief);
+  INFO(profile_checks::to_string(f));
+  CHECK(f.ok());
+  // Push (a at +J), then the stop's rise and fall: the switch past the flat stretch,
+  // (|a0| - A-) / J = 1.0117 s.
+  REQUIRE(prof.segment_count() == 3);
+  const double flat = (-start.a - l.deceleration) / l.jerk;
+  CHECK(flat == Approx(1.0117).epsilon(1e-4));
+  CHECK(prof.segment(0).duration > flat);
+  CHECK(prof.segment(0).duration == Approx(2.655771577181437).epsilon(1e-9));
+  CHECK(prof.duration() == Approx(4.641438469864922).epsilon(1e-9));
+  // The push's end and the stop's start agree to the rounding of positions of 1e-8.
+  const nc::KinematicState end0 =
+      profile_checks::advance(prof.segment(0), prof.segment(0).duration);
+  CHECK(std::fabs(end0.p - prof.segment(1).p) <= 1e-20);
+  // Time-optimal from every state of it (the old switch at 1.46 s among the re-planning times).
+  const double worst = worst_bellman_miss(prof, 1.4597050064061259, [&](const KinematicState& x) {
+    return nc::plan_position(x, target, l);
+  });
+  CHECK(worst <= kBellman);
+}
