@@ -181,3 +181,58 @@ TEST_CASE("a plan to rest from an acceleration beyond A- searches its switch pas
   });
   CHECK(worst <= kBellman);
 }
+
+// Issue 14 item 1 (the Bellman suite's end-velocity case, NCSDK_PROFILE_SEED 1, 10 and 12): a
+// profile to a target passed at a large v_end that ends with a hold at a tiny A- and the final
+// ramp at J. Re-planned from that ramp's start (v anchored back from v_end, 0.35 ulp of v above
+// the curve v_end + A-^2 / 2J), the walk decided v_nat = v_end on rounded values and landed with
+// a jerk 3.5e-5 below J, whose longer ramp carried that ulp into the distance (v_end / A- per
+// ulp: 1.7e-9 mm at 7995 mm/s against A- = 3.07); the target lay behind the direct change and the
+// re-plan reversed (5208 s instead of 6e-9 s). The ramp at J now lands on v_end exactly.
+TEST_CASE("re-planning on the final ramp to a large end velocity after a tiny A- gives that ramp",
+          "[profile][regression]") {
+  struct Case {
+    KinematicState start;
+    double target;
+    Limits limits;
+    double v_end;
+  };
+  const Case cases[] = {
+      {{0.0, -0.72587239448174246, -237965.69561997949},
+       1.7646425623667108,
+       {92447.958365486513, 416937.73585117009, 3.0703825123516917, 515246747.62446207},
+       7995.3682482844451},
+      {{0.0, -138.94714921090733, -120427.45741771164},
+       -4.6695643585864532e-06,
+       {93514.226180012687, 152254.86245175818, 0.21270550040125299, 17023308.407452554},
+       42891.734202245862},
+      {{0.0, -0.085416777752018017, -121466.72852563974},
+       -0.00070595811591698491,
+       {3989.7793522486004, 122643.1038883591, 0.12348983566035204, 550488385.04707038},
+       795.44777247563752},
+  };
+  for (const Case& c : cases) {
+    const Profile prof = nc::plan_position(c.start, c.target, c.v_end, c.limits);
+    REQUIRE(prof.ok());
+    REQUIRE(prof.segment_count() > 1);
+    const nc::Segment& ramp = prof.segment(prof.segment_count() - 1);
+    CHECK(ramp.a == -c.limits.deceleration);
+    CHECK(ramp.j == c.limits.jerk);
+    // From the ramp's start: that ramp (at J, A- / J long), not a reversal.
+    const KinematicState x = prof.at(ramp.t0);
+    const Profile again = nc::plan_position(x, c.target, c.v_end, c.limits);
+    REQUIRE(again.ok());
+    REQUIRE(again.segment_count() == 1);
+    CHECK(again.segment(0).j == c.limits.jerk);
+    CHECK(again.duration() == Approx(c.limits.deceleration / c.limits.jerk).epsilon(1e-9));
+    CHECK(std::fabs(again.duration() - (prof.duration() - ramp.t0)) <= kBellman * prof.duration());
+    const profile_checks::Finding f =
+        profile_checks::check_passing_profile(again, x, c.target, c.v_end, c.limits);
+    INFO(profile_checks::to_string(f));
+    CHECK(f.ok());
+    const double worst = worst_bellman_miss(prof, ramp.t0, [&](const KinematicState& y) {
+      return nc::plan_position(y, c.target, c.v_end, c.limits);
+    });
+    CHECK(worst <= kBellman);
+  }
+}
