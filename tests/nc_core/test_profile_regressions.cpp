@@ -236,3 +236,33 @@ TEST_CASE("re-planning on the final ramp to a large end velocity after a tiny A-
     CHECK(worst <= kBellman);
   }
 }
+
+// Fuzz finding P20 (seed 1901, after P19's fix): P19's start with A- = 8.4e-9, so that a0 lies
+// within A- and the stop point is not flat but rises by only 1e-11 over the push's first second
+// (the stop's first ramp is a -J piece of 8 ms). The root search alternated between a model step
+// from the near end to 17 s and a step back just past the near end, for all its 100 steps, and
+// stopped at 1.59 s, 2.3e-9 short of the goal. Past 32 steps it now bisects: the switch at
+// 2.684 s.
+TEST_CASE("a plan to rest whose stop point starts nearly flat finds its switch",
+          "[profile][regression]") {
+  const KinematicState start{6.5714319085850565e-110, 7.1604517895519803e-09,
+                             -7.041529123769967e-09};
+  const double target = 7.1579467568195242e-09;
+  const Limits l{128.00002419665364, 163216653698.52249, 8.381903171540468e-09,
+                 3.4957532198052841e-09};
+  const Profile prof = nc::plan_position(start, target, l);
+  REQUIRE(prof.ok());
+  const profile_checks::Finding f = profile_checks::check_position_profile(prof, start, target, l);
+  INFO(profile_checks::to_string(f));
+  CHECK(f.ok());
+  REQUIRE(prof.segment_count() == 3);
+  CHECK(prof.segment(0).duration == Approx(2.6836719609189457).epsilon(1e-9));
+  CHECK(prof.duration() == Approx(4.7207379403815857).epsilon(1e-9));
+  const nc::KinematicState end0 =
+      profile_checks::advance(prof.segment(0), prof.segment(0).duration);
+  CHECK(std::fabs(end0.p - prof.segment(1).p) <= 1e-20);
+  const double worst = worst_bellman_miss(prof, 1.5911744304771096, [&](const KinematicState& x) {
+    return nc::plan_position(x, target, l);
+  });
+  CHECK(worst <= kBellman);
+}
