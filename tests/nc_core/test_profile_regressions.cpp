@@ -241,7 +241,7 @@ TEST_CASE("re-planning on the final ramp to a large end velocity after a tiny A-
 // within A- and the stop point is not flat but rises by only 1e-11 over the push's first second
 // (the stop's first ramp is a -J piece of 8 ms). The root search alternated between a model step
 // from the near end to 17 s and a step back just past the near end, for all its 100 steps, and
-// stopped at 1.59 s, 2.3e-9 short of the goal. Past 32 steps it now bisects: the switch at
+// stopped at 1.59 s, 2.3e-9 short of the goal. Past 64 steps it now bisects: the switch at
 // 2.684 s.
 TEST_CASE("a plan to rest whose stop point starts nearly flat finds its switch",
           "[profile][regression]") {

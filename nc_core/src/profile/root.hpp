@@ -24,10 +24,10 @@ struct RootPoint {
 // Past this many steps the search only bisects: a model step that keeps overshooting from the
 // near end and a power-law step that keeps landing just past it (a function flat for a while
 // before it rises, fuzz finding P20) would otherwise alternate until the step limit and return a
-// point far from the root. A well-behaved root takes 2-4 steps; bisection then narrows any
-// bracket to a few ulp within kRootSteps.
-inline constexpr int kModelSteps = 32;
-inline constexpr int kRootSteps = 160;
+// point far from the root. A well-behaved root takes 2-4 steps (the planner suites up to about
+// 60); bisection then narrows any bracket to a few ulp within kRootSteps.
+inline constexpr int kModelSteps = 64;
+inline constexpr int kRootSteps = 200;
 
 template <class FD>
 double find_root_quadratic(FD&& fd, double lo, double hi, double x, double f_lo) noexcept {
