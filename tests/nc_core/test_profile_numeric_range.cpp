@@ -374,3 +374,35 @@ TEST_CASE("an end velocity whose change needs more than 1e15 is refused with 0x4
   REQUIRE(prof.ok());
   CHECK(profile_checks::check_passing_profile(prof, {0.0, 0.0, 0.0}, 1e6, 2000.0, enough).ok());
 }
+
+TEST_CASE("a run-up backwards before a large end velocity is anchored at its v = 0 crossing",
+          "[profile][range]") {
+  // Fuzz finding P18 (seed 1801): P16's start and limits with v_end = 600 (4.9e13 mm to change at
+  // A-, within the range): a hold at -A- to v = 0 (8386 s), a turn, 9500 s back at A- to v = 0,
+  // then 1.2e-4 s up to 600. Anchored back from 600, the crossing's velocity carried 1 ulp of
+  // 600 (1.1e-13 mm/s), and the 9500 s hold before it turned that into a jump of 1.08e-9 mm at
+  // the switch. The crossing keeps its exact v = 0 now; the jump is at the positions' rounding.
+  const Limits l{164752293244.48627, 8589934592.0, 3.6390076368974896e-09, 164456324477.9472};
+  const KinematicState s{6.5715143469463669e-110, 3.0515277103438552e-05, 4.6570422518632973e-10};
+  const double target = 6.0780413869071933e-86;
+  const double v_end = 600.1572265625;
+  const Profile prof = nc::plan_position(s, target, v_end, l);
+  REQUIRE(prof.ok());
+  profile_checks::StartRelief relief;
+  relief.over_acceleration = true;
+  const profile_checks::Finding f =
+      profile_checks::check_passing_profile(prof, s, target, v_end, l, {}, relief);
+  INFO(profile_checks::to_string(f));
+  CHECK(f.ok());
+  REQUIRE(prof.segment_count() == 7);
+  // The switch (segment 2 to 3): continuous to 1e-15 mm (it was 1.08e-9).
+  const KinematicState end2 = profile_checks::advance(prof.segment(2), prof.segment(2).duration);
+  CHECK(std::fabs(end2.p - prof.segment(3).p) <= 1e-15);
+  // The hold at A- back to v = 0 and the crossing at exactly 0.
+  const nc::Segment& hold = prof.segment(4);
+  CHECK(hold.a == l.deceleration);
+  CHECK(hold.duration == Approx(9499.7008888055734).epsilon(1e-12));
+  CHECK(prof.segment(5).v == 0.0);
+  CHECK(hold.v == Approx(-l.deceleration * hold.duration).epsilon(1e-14));
+  CHECK(prof.duration() == Approx(17885.305039178773).epsilon(1e-12));
+}

@@ -141,3 +141,128 @@ TEST_CASE("a stop re-plans from the start of its last ramp to exactly that ramp"
   });
   CHECK(worst <= 1e-9);
 }
+
+// Fuzz finding P19: a plan to rest from v = 7.2e-9 mm/s with a = -7.0e-9 mm/s² (twice A-, against
+// the motion) to a target 7.0e-9 mm ahead, A- = 3.5e-9, J = 3.5e-9. The push's first ramp (a at
+// +J) is the stop's own ramp back to A-, so the stop point stays where it is for the first 1.01 s
+// of the push; the root search started from tau = 0, alternated between both ends of its bracket
+// for 100 steps and stopped at 1.46 s, 2.1e-9 short of the goal (continuity broken by 2.1e-9).
+// The search now starts where that flat stretch ends: the switch lies at 2.656 s.
+TEST_CASE("a plan to rest from an acceleration beyond A- searches its switch past the flat stretch",
+          "[profile][regression]") {
+  const KinematicState start{6.5714319085850565e-110, 7.1604517895519803e-09,
+                             -7.041529123769967e-09};
+  const double target = 7.0415289535752134e-09;
+  const Limits l{164761066496.47064, 2.0574137664720906e-06, 3.4925699845285376e-09,
+                 3.5079210647381842e-09};
+  const Profile prof = nc::plan_position(start, target, l);
+  REQUIRE(prof.ok());
+  profile_checks::StartRelief relief;
+  relief.over_acceleration = true;
+  const profile_checks::Finding f =
+      profile_checks::check_position_profile(prof, start, target, l, {}, relief);
+  INFO(profile_checks::to_string(f));
+  CHECK(f.ok());
+  // Push (a at +J), then the stop's rise and fall: the switch past the flat stretch,
+  // (|a0| - A-) / J = 1.0117 s.
+  REQUIRE(prof.segment_count() == 3);
+  const double flat = (-start.a - l.deceleration) / l.jerk;
+  CHECK(flat == Approx(1.0117).epsilon(1e-4));
+  CHECK(prof.segment(0).duration > flat);
+  CHECK(prof.segment(0).duration == Approx(2.655771577181437).epsilon(1e-9));
+  CHECK(prof.duration() == Approx(4.641438469864922).epsilon(1e-9));
+  // The push's end and the stop's start agree to the rounding of positions of 1e-8.
+  const nc::KinematicState end0 =
+      profile_checks::advance(prof.segment(0), prof.segment(0).duration);
+  CHECK(std::fabs(end0.p - prof.segment(1).p) <= 1e-20);
+  // Time-optimal from every state of it (the old switch at 1.46 s among the re-planning times).
+  const double worst = worst_bellman_miss(prof, 1.4597050064061259, [&](const KinematicState& x) {
+    return nc::plan_position(x, target, l);
+  });
+  CHECK(worst <= kBellman);
+}
+
+// Issue 14 item 1 (the Bellman suite's end-velocity case, NCSDK_PROFILE_SEED 1, 10 and 12): a
+// profile to a target passed at a large v_end that ends with a hold at a tiny A- and the final
+// ramp at J. Re-planned from that ramp's start (v anchored back from v_end, 0.35 ulp of v above
+// the curve v_end + A-^2 / 2J), the walk decided v_nat = v_end on rounded values and landed with
+// a jerk 3.5e-5 below J, whose longer ramp carried that ulp into the distance (v_end / A- per
+// ulp: 1.7e-9 mm at 7995 mm/s against A- = 3.07); the target lay behind the direct change and the
+// re-plan reversed (5208 s instead of 6e-9 s). The ramp at J now lands on v_end exactly.
+TEST_CASE("re-planning on the final ramp to a large end velocity after a tiny A- gives that ramp",
+          "[profile][regression]") {
+  struct Case {
+    KinematicState start;
+    double target;
+    Limits limits;
+    double v_end;
+  };
+  const Case cases[] = {
+      {{0.0, -0.72587239448174246, -237965.69561997949},
+       1.7646425623667108,
+       {92447.958365486513, 416937.73585117009, 3.0703825123516917, 515246747.62446207},
+       7995.3682482844451},
+      {{0.0, -138.94714921090733, -120427.45741771164},
+       -4.6695643585864532e-06,
+       {93514.226180012687, 152254.86245175818, 0.21270550040125299, 17023308.407452554},
+       42891.734202245862},
+      {{0.0, -0.085416777752018017, -121466.72852563974},
+       -0.00070595811591698491,
+       {3989.7793522486004, 122643.1038883591, 0.12348983566035204, 550488385.04707038},
+       795.44777247563752},
+  };
+  for (const Case& c : cases) {
+    const Profile prof = nc::plan_position(c.start, c.target, c.v_end, c.limits);
+    REQUIRE(prof.ok());
+    REQUIRE(prof.segment_count() > 1);
+    const nc::Segment& ramp = prof.segment(prof.segment_count() - 1);
+    CHECK(ramp.a == -c.limits.deceleration);
+    CHECK(ramp.j == c.limits.jerk);
+    // From the ramp's start: that ramp (at J, A- / J long), not a reversal.
+    const KinematicState x = prof.at(ramp.t0);
+    const Profile again = nc::plan_position(x, c.target, c.v_end, c.limits);
+    REQUIRE(again.ok());
+    REQUIRE(again.segment_count() == 1);
+    CHECK(again.segment(0).j == c.limits.jerk);
+    CHECK(again.duration() == Approx(c.limits.deceleration / c.limits.jerk).epsilon(1e-9));
+    CHECK(std::fabs(again.duration() - (prof.duration() - ramp.t0)) <= kBellman * prof.duration());
+    const profile_checks::Finding f =
+        profile_checks::check_passing_profile(again, x, c.target, c.v_end, c.limits);
+    INFO(profile_checks::to_string(f));
+    CHECK(f.ok());
+    const double worst = worst_bellman_miss(prof, ramp.t0, [&](const KinematicState& y) {
+      return nc::plan_position(y, c.target, c.v_end, c.limits);
+    });
+    CHECK(worst <= kBellman);
+  }
+}
+
+// Fuzz finding P20 (seed 1901, after P19's fix): P19's start with A- = 8.4e-9, so that a0 lies
+// within A- and the stop point is not flat but rises by only 1e-11 over the push's first second
+// (the stop's first ramp is a -J piece of 8 ms). The root search alternated between a model step
+// from the near end to 17 s and a step back just past the near end, for all its 100 steps, and
+// stopped at 1.59 s, 2.3e-9 short of the goal. Past 64 steps it now bisects: the switch at
+// 2.684 s.
+TEST_CASE("a plan to rest whose stop point starts nearly flat finds its switch",
+          "[profile][regression]") {
+  const KinematicState start{6.5714319085850565e-110, 7.1604517895519803e-09,
+                             -7.041529123769967e-09};
+  const double target = 7.1579467568195242e-09;
+  const Limits l{128.00002419665364, 163216653698.52249, 8.381903171540468e-09,
+                 3.4957532198052841e-09};
+  const Profile prof = nc::plan_position(start, target, l);
+  REQUIRE(prof.ok());
+  const profile_checks::Finding f = profile_checks::check_position_profile(prof, start, target, l);
+  INFO(profile_checks::to_string(f));
+  CHECK(f.ok());
+  REQUIRE(prof.segment_count() == 3);
+  CHECK(prof.segment(0).duration == Approx(2.6836719609189457).epsilon(1e-9));
+  CHECK(prof.duration() == Approx(4.7207379403815857).epsilon(1e-9));
+  const nc::KinematicState end0 =
+      profile_checks::advance(prof.segment(0), prof.segment(0).duration);
+  CHECK(std::fabs(end0.p - prof.segment(1).p) <= 1e-20);
+  const double worst = worst_bellman_miss(prof, 1.5911744304771096, [&](const KinematicState& x) {
+    return nc::plan_position(x, target, l);
+  });
+  CHECK(worst <= kBellman);
+}

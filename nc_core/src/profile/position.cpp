@@ -111,14 +111,35 @@ Profile plan_position(const KinematicState& start, double target, const Limits& 
         return detail::RootPoint{p_t + d.x - goal, v_t + d.d, a_t + d.dd,
                                  kRootTolerance * (std::abs(p_t) + std::abs(d.x) + goal)};
       };
-      // Start where S - S(0) = c tau^n would meet the goal, with the exponent it typically has
-      // over a piece: 2 on a hold (a constant), 4 on a jerk piece (measured on the benchmark
-      // sets: 2.5 evaluations per root instead of 3.4 from the secant point). The root finder
-      // also uses that power law when its local model misleads it.
-      const double r0 = std::clamp((goal - s_here) / (s_next - s_here), 0.0, 1.0);
+      // A start acceleration against the push beyond A- (a < -A-, the motion still forwards:
+      // v_nat > 0) is brought back by the stop at +J, as the push's first ramp does: along that
+      // ramp S(tau) stays S(0) until a is back at A-. The search starts at the end of that flat
+      // stretch, where S begins to rise (fuzz finding P19: A- = J = 3.5e-9, a = -2 A-; from
+      // tau = 0 the power law below saw S rise from a point 1.01 s away, and 100 steps
+      // alternated between both ends of the bracket and stopped 2.1e-9 short of the goal).
+      double lo = 0.0;
+      double f_lo = s_here - goal;
+      if (jerk > 0.0 && s.a < -stop_bounds.am_limit &&
+          detail::natural_velocity(s.v, s.a, jerk) > 0.0) {
+        const double t_flat = (-stop_bounds.am_limit - s.a) / jerk;
+        if (t_flat < push[i].t) {
+          const double f_flat = fd(t_flat).f;
+          if (f_flat < 0.0) {
+            lo = t_flat;
+            f_lo = f_flat;
+          }
+        }
+      }
+      // Start where S - S(lo) = c (tau - lo)^n would meet the goal, with the exponent it
+      // typically has over a piece: 2 on a hold (a constant), 4 on a jerk piece (measured on the
+      // benchmark sets: 2.5 evaluations per root instead of 3.4 from the secant point). The root
+      // finder also uses that power law when its local model misleads it.
+      const double r0 = std::clamp(
+          lo == 0.0 ? (goal - s_here) / (s_next - s_here) : -f_lo / ((s_next - goal) - f_lo), 0.0,
+          1.0);
       const double q0 = std::sqrt(r0);
-      const double x0 = push[i].t * (jerk == 0.0 ? q0 : std::sqrt(q0));
-      const double tau = detail::find_root_quadratic(fd, 0.0, push[i].t, x0, s_here - goal);
+      const double x0 = lo + (push[i].t - lo) * (jerk == 0.0 ? q0 : std::sqrt(q0));
+      const double tau = detail::find_root_quadratic(fd, lo, push[i].t, x0, f_lo);
       const KinematicState x = detail::advance(s, jerk, tau);
       push[i] = Piece{tau, jerk, x.a, NAN};
       n_stop = detail::velocity_change(x.v, x.a, 0.0, bounds, stop);

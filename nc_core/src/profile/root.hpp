@@ -21,12 +21,20 @@ struct RootPoint {
   double tol = 0.0;
 };
 
+// Past this many steps the search only bisects: a model step that keeps overshooting from the
+// near end and a power-law step that keeps landing just past it (a function flat for a while
+// before it rises, fuzz finding P20) would otherwise alternate until the step limit and return a
+// point far from the root. A well-behaved root takes 2-4 steps (the planner suites up to about
+// 60); bisection then narrows any bracket to a few ulp within kRootSteps.
+inline constexpr int kModelSteps = 64;
+inline constexpr int kRootSteps = 200;
+
 template <class FD>
 double find_root_quadratic(FD&& fd, double lo, double hi, double x, double f_lo) noexcept {
   const double origin = lo;
   double last_step = 0.0;  // the previous model step (its model predicted f = 0 here)
   double last_f = 0.0;
-  for (int iter = 0; iter < 100; ++iter) {
+  for (int iter = 0; iter < kRootSteps; ++iter) {
     const RootPoint y = fd(x);
     if (std::abs(y.f) <= y.tol) return x;
     if (y.f < 0.0) {
@@ -64,6 +72,10 @@ double find_root_quadratic(FD&& fd, double lo, double hi, double x, double f_lo)
       // step is taken without checking it.
       const double r = std::abs(step / last_step);
       if (std::abs(y.f) * r * r * r <= 0.125 * y.tol) return next;
+    }
+    if (iter >= kModelSteps) {
+      next = 0.5 * (lo + hi);
+      step = 0.0;
     }
     if (hi - lo <= 4.0 * DBL_EPSILON * std::abs(hi)) return next;
     last_step = step;

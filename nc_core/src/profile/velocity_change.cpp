@@ -122,7 +122,19 @@ int upward(double v, double a, double v1, const Bounds& b, double sign, Sink& ou
     // far above 2J(v - v1) (fuzz finding P5: 11.6 J), and the ramp at J below is taken instead.
     const double landing_t = 2.0 * (v1 - v) / a;
     if (on_final && a < 0.0 && v > v1 && -a / landing_t <= jerk * (1.0 + 8.0 * kRel)) {
-      put(landing_t, -a / landing_t, 0.0, v1, true);
+      // A landing below J only comes from rounding here (v_nat <= v1 was decided on rounded
+      // values, so v may sit an ulp above the curve). Its length 2 (v - v1) / |a| would carry
+      // that ulp of v into the distance at v1 / |a| per ulp, and a state sampled on a profile's
+      // final ramp at J would then re-plan to a reversal (the Bellman suite's seeds 1, 10, 12:
+      // 0.35 ulp of v = 7995 against A- = 3.07 moved the end by 1.7e-9): the ramp at J is taken
+      // instead, ending on v1 exactly (a velocity jump within the rounding of v, as the walk's
+      // mirror image makes from the other side of the curve).
+      const double over = (v - v1) - 0.5 * a * a / jerk;  // v_nat - v1: where a ramp at J ends
+      if (-a / landing_t < jerk && std::abs(over) <= tol_v) {
+        put(-a / jerk, jerk, 0.0, v1, true);
+      } else {
+        put(landing_t, -a / landing_t, 0.0, v1, true);
+      }
       return n;
     }
     const double a_meet = on_final ? 0.0 : std::sqrt(std::max(meet2, 0.0));
