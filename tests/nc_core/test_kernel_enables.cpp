@@ -19,7 +19,7 @@ TEST_CASE(
   kt::Harness h(kt::seed_axis(), 0.001, false);
   CHECK(kt::axis_state(*h.x) == AxisState::kDisabled);
   CHECK_FALSE(kt::bit(*h.x, plc::kStateOperational));
-  CHECK(kt::bit(*h.x, plc::kStateHomed));  // no homing yet: homed from the start
+  CHECK(kt::bit(*h.x, plc::kStateHomed));  // homed_at_start (the default): homed from the start
   CHECK(kt::bit(*h.x, plc::kStateNotMoving));
   kt::set_enables(*h.x, true);
   h.cycles(1);

@@ -235,7 +235,7 @@ void TwoSpeedAxis::phase_publish(uint64_t cycle_counter, int32_t index) noexcept
     word |= static_cast<uint32_t>(value) << bit;
   };
   set_bit(plc::kStateOperational, enabled && !error);
-  set_bit(plc::kStateHomed, true);  // no homing yet: every axis counts as homed
+  set_bit(plc::kStateHomed, true);  // no homing sequence: a two-speed axis counts as homed
   set_bit(plc::kStateNotMoving, std::abs(plant_.velocity()) < config_.standstill_window);
   set_bit(plc::kStateInPositionArea, monitors_.in_position_area());
   set_bit(plc::kStateInTargetPosition, monitors_.in_target_position());
