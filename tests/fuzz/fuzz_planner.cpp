@@ -1,10 +1,11 @@
-// fuzz_planner (issue 16): raw doubles into plan_position / plan_velocity (SPEC B2). Invariant:
-// the planner either refuses (ok() false with an error code) or returns a profile that is finite,
-// starts at the given state, keeps V, A+ / A- (path-relative) and J — a start outside the limits
-// only comes back inside them as fast as the limits allow (where the start's acceleration makes
-// |v| pass V whatever is done, the unavoidable peak is the bound) — and ends exactly at the target
-// (at rest, or passing it at plan_position's end velocity) or at the requested velocity. The checks
-// are the planner tests' own (tests/support/profile_checks.hpp), with their tolerances.
+// fuzz_planner (issue 16): raw doubles into plan_position / plan_velocity / plan_stop (SPEC B2).
+// Invariant: the planner either refuses (ok() false with an error code) or returns a profile that
+// is finite, starts at the given state, keeps V, A+ / A- (path-relative) and J — a start outside
+// the limits only comes back inside them as fast as the limits allow (where the start's
+// acceleration makes |v| pass V whatever is done, the unavoidable peak is the bound) — and ends
+// exactly at the target (at rest, or passing it at plan_position's end velocity) or at the
+// requested velocity. The checks are the planner tests' own (tests/support/profile_checks.hpp),
+// with their tolerances.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -79,18 +80,38 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
   // Bit 7: plan_position's four-argument call, its end velocity read after the limits (issue 14;
   // inputs without bit 7 decode as before).
   const bool passing = position && (mode & 0x80U) != 0;
+  // Bit 7 with bit 0: plan_stop with the deceleration and jerk (the goal, V and A+ unused). No
+  // kept input has both bits set, so every earlier input decodes as before.
+  const bool stop = !position && (mode & 0x80U) != 0;
   const double v_end = passing ? next() : 0.0;
   const nc::Profile profile = passing    ? nc::plan_position(start, goal, v_end, limits)
                               : position ? nc::plan_position(start, goal, limits)
+                              : stop     ? nc::plan_stop(start, limits.deceleration, limits.jerk)
                                          : nc::plan_velocity(start, goal, limits);
   const char* kind = passing    ? "plan_position (end velocity)"
                      : position ? "plan_position"
+                     : stop     ? "plan_stop (A- and J used)"
                                 : "plan_velocity";
 
   if (!profile.ok()) {
     if (profile.error() == nc::ErrorCode::kNone)
       report(kind, start, goal, v_end, limits, "no code");
     return 0;  // a refusal is a valid answer to any input
+  }
+  if (stop) {
+    // plan_stop takes only A- and J: those valid and a finite start; the profile is a velocity
+    // change to 0 that keeps A- (for |a| both ways: a stop lets |v| grow only where an overshoot
+    // through v = 0 cannot be avoided) and J, from a start outside A- as fast as J allows. It has
+    // no V: the bound is the peak the start forces, |v| + a0² / 2J.
+    const auto positive = [](double x) { return std::isfinite(x) && x > 0.0; };
+    if (!positive(limits.deceleration) || !positive(limits.jerk) || !finite_state(start))
+      report(kind, start, goal, v_end, limits, "accepted invalid inputs");
+    nc::Limits keep{(std::fabs(start.v) + start.a * start.a / (2.0 * limits.jerk)) * (1.0 + 1e-9),
+                    limits.deceleration, limits.deceleration, limits.jerk};
+    const pc::Finding finding =
+        pc::check_velocity_profile(profile, start, 0.0, keep, {}, relief_for(start, keep));
+    if (!finding.ok()) report(kind, start, goal, v_end, limits, pc::to_string(finding));
+    return 0;
   }
   // Accepted: the inputs must have been valid …
   if (!valid_limits(limits) || !finite_state(start) || !std::isfinite(goal) ||

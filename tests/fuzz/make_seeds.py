@@ -158,7 +158,7 @@ BLOCKS = {
 
 PLANNER = {
     # mode byte: bit 0 velocity planner, bit 1 raw doubles, bit 7 plan_position with an end
-    # velocity (read after the limits).
+    # velocity (read after the limits); bits 0 and 7: plan_stop (A- and J of the limits).
     "rest_to_rest": bytes([0]) + num(0) + num(0) + num(0) + num(1000) + num(2000) + num(5000)
     + num(5000) + num(50000),
     "moving_start": bytes([0]) + num(100) + num(1500) + num(-2000) + num(-500) + num(2000)
@@ -173,6 +173,8 @@ PLANNER = {
     + num(5000) + num(50000) + num(1500),
     "run_up_backwards": bytes([0x80]) + num(100) + num(0) + num(0) + num(101) + num(2000)
     + num(5000) + num(5000) + num(50000) + num(2000),
+    "stop": bytes([0x81]) + num(0) + num(1500) + num(-2000) + num(0) + num(2000) + num(5000)
+    + num(4000) + num(50000),
 }
 
 
