@@ -86,8 +86,13 @@ struct AxisProgram {
   std::size_t dyn_master = 0;       // the master input of gear_dyn
   std::size_t dyn_edge_master = 0;  // ... when gear_dyn posted its last coupling command
   double dyn_edge_bound = 0.0;      // ... and its Acceleration (AccBound) then
-  std::size_t gear_master = 0;      // the master input of gear_in
-  std::size_t edge_master = 0;      // the master input when gear_in posted its last command
+  // MC_Home and MC_GearInDyn are called once the program has set their inputs: an untouched
+  // MC_Home stays idle, and an untouched MC_GearInDyn would only write its default GearRatio
+  // over the program's raw GearRatio1 writes.
+  bool home_used = false;
+  bool dyn_used = false;
+  std::size_t gear_master = 0;  // the master input of gear_in
+  std::size_t edge_master = 0;  // the master input when gear_in posted its last command
   std::array<fb::MC_MoveRelative, kBurst> burst;
   // Burst blocks [0, bursts) have had a rising edge; the others have never been executed, so a
   // call leaves them idle and is skipped (the blocks are most of the calls of a cycle).
@@ -219,9 +224,11 @@ void plc_cycle(AxisProgram& a, plc::AXIS_REF& axis, const plc::AXIS_REF* master,
     if (a.gear_in.InGear && !a.gear_in.Busy) fuzz::fail("InGear without Busy");
     fuzz::call_checked(a.gear_out, axis);
   }
-  if (dyn_master != nullptr) {
+  if (dyn_master != nullptr && a.home_used) {
     a.home.bCalibrationCam = a.cam;
     fuzz::call_checked(a.home, axis);
+  }
+  if (dyn_master != nullptr && a.dyn_used) {
     const uint16_t before = a.gear_dyn.command_number();
     a.gear_dyn(*dyn_master, axis);
     if (a.gear_dyn.command_number() != before) {
@@ -334,6 +341,7 @@ void edit_execute_block(AxisProgram& a, fuzz::AxisWatch& watch, fuzz::ByteReader
 // aborting a move, with that move's dynamics) is a motion like any other for the watch.
 void edit_home(AxisProgram& a, fuzz::ByteReader& in) {
   fb::MC_Home& h = a.home;
+  a.home_used = true;
   const uint8_t mode = in.byte();
   h.HomingMode = static_cast<fb::MC_HomingMode>(mode < 200 ? mode % 7 : static_cast<int8_t>(mode));
   h.Position = in.flag() ? fb::DEFAULT_HOME_POSITION : in.number();
@@ -346,6 +354,7 @@ void edit_home(AxisProgram& a, fuzz::ByteReader& in) {
 // Feature programs: MC_GearInDyn's factor (written every cycle), AccBound, master, Enable.
 void edit_gear_dyn(AxisProgram& a, std::size_t n_axes, fuzz::ByteReader& in) {
   fb::MC_GearInDyn& g = a.gear_dyn;
+  a.dyn_used = true;
   g.GearRatio = in.number();
   if (in.flag()) g.Acceleration = in.number();
   if (in.flag()) {
@@ -371,7 +380,8 @@ struct Program {
       // The cam signals of this cycle (a set-up lookup by name: outside the counted region).
       for (std::size_t i = 0; i < axes.size(); ++i) {
         AxisProgram& a = programs[i];
-        a.cam = a.cam_source == 0 ? kernel.reference_cam(names[i]) : a.cam_source == 2;
+        if (a.home_used)
+          a.cam = a.cam_source == 0 ? kernel.reference_cam(names[i]) : a.cam_source == 2;
       }
     }
     {
