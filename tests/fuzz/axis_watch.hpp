@@ -10,6 +10,15 @@
 //    slave decoupled in motion goes on as it would have as a slave (C4, factor x its former
 //    master's plan, then a replan from that state), so its own limits are not checked until it
 //    rests;
+//  - a homing axis (docs/behaviour.md "Homing"): while HomingBusy, |SetVelo| stays within its
+//    larger homing velocity, or, for a homing that took over a motion, within the peak that
+//    motion's set state leads to at the axis's jerk (|v| + a² / 2J, where it started);
+//  - a cyclic slave (MC_GearInDyn, C6): SetVelo = GearRatio × its master's, and in a cycle in
+//    which the factor in force moves, |SetAcc| stays within the coupling's AccBound;
+//  - a slave that left its coupling on its own error under DELAYED propagation (C7) still shows
+//    as a slave, with GearRatio 0;
+//  - a two-speed axis (E4): SetVelo is 0 or ± rapid_velocity / creep_velocity, SetAcc 0,
+//    |ActVelo| at most rapid_velocity (its own limits replace the servo ones);
 //  - every command number posted is answered (leaves kPosted) within 2 NC cycles, its answer
 //    slot is never lost, the states only move forward (posted → active → reached → an outcome),
 //    and an outcome, once given, never changes.
@@ -25,6 +34,7 @@
 #include "fail.hpp"
 #include "nc_core/axis_config.hpp"
 #include "plc_interface/axis_ref.hpp"
+#include "plc_interface/two_speed.hpp"
 
 namespace fuzz {
 
@@ -62,7 +72,12 @@ class AxisWatch {
         base_acceleration_(
             std::max({config.acceleration, config.deceleration, config.emergency_deceleration})),
         delay_(config.ext_setpoint_delay),
-        stop_jerk_(std::min(config.jerk, config.emergency_jerk)) {
+        stop_jerk_(std::min(config.jerk, config.emergency_jerk)),
+        homing_velocity_(std::max(config.homing_velocity_to_cam, config.homing_velocity_off_cam)),
+        jerk_(config.jerk),
+        two_speed_(config.kind == nc::AxisKind::kTwoSpeed),
+        rapid_(config.rapid_velocity),
+        creep_(config.creep_velocity) {
     rest();
   }
 
@@ -93,7 +108,19 @@ class AxisWatch {
   // axes"), checked instead of its own limits while both axes are operational (see
   // check_following). `master` is the master's image, nullptr when the PLC does not know it.
   // Set before every check().
-  void follow(const plc::NCTOPLC_AXIS_REF* master) noexcept { master_ = master; }
+  void follow(const plc::NCTOPLC_AXIS_REF* master) noexcept {
+    master_ = master;
+    cyclic_ = false;
+  }
+  // A cyclic slave (MC_GearInDyn) whose coupling command in force is `number`, latched with
+  // `acc_bound`; `master` as for follow(). Set before every check() instead of follow().
+  void follow_cyclic(const plc::NCTOPLC_AXIS_REF* master, uint16_t number,
+                     double acc_bound) noexcept {
+    master_ = master;
+    cyclic_ = master != nullptr;
+    cyclic_number_ = number;
+    acc_bound_ = acc_bound;
+  }
 
   // --- After the PLC's calls of one cycle: the commands it posted (kernel drained the rest).
   FUZZ_CHECKER void posted(const plc::AXIS_REF& axis) noexcept {
@@ -114,10 +141,34 @@ class AxisWatch {
     pending_ = axis.Mailbox.pending();
     const plc::NCTOPLC_AXIS_REF& n = axis.NcToPlc;
     if (non_finite_field(n) != nullptr) return "NcToPlc double not finite";
+    if (two_speed_) {
+      if (const char* broken = check_two_speed(n)) return broken;
+      return check_answers(axis.Mailbox);
+    }
     const bool coupled = plc::test_bit(n.StateDWord, plc::kStateCoupled);
     if (was_coupled_ && !coupled) decoupled_ = true;  // rest() ends it at once when at rest
     was_coupled_ = coupled;
-    if (coupled) {
+    left_ = coupled && (left_ || plc::test_bit(n.StateDWord, plc::kStateErrorPropagationDelayed));
+    const bool homing = plc::test_bit(n.StateDWord, plc::kStateHomingBusy);
+    if (homing && !homing_) {
+      // A homing started from the last cycle's set state: it may first bring that state's
+      // acceleration back at J (the aborted motion's larger J brings it back sooner).
+      homing_bound_ =
+          std::max(homing_velocity_, std::fabs(last_v_) + last_a_ * last_a_ / (2.0 * jerk_));
+    }
+    homing_ = homing;
+    last_v_ = n.SetVelo;
+    last_a_ = n.SetAcc;
+    if (homing && std::fabs(n.SetVelo) > homing_bound_ * (1.0 + 1e-9) + 1e-9) {
+      return "homing set velocity above its homing velocity";
+    }
+    const bool cyclic = coupled && cyclic_ && n.CmdNo == cyclic_number_;
+    const bool moved = cyclic && was_cyclic_ && n.GearRatio != last_ratio_;
+    was_cyclic_ = cyclic;
+    last_ratio_ = n.GearRatio;
+    if (cyclic) {
+      if (const char* broken = check_cyclic(n, moved)) return broken;
+    } else if (coupled) {
       if (const char* broken = check_following(n)) return broken;
     } else if (!decoupled_) {
       if (std::fabs(n.SetVelo) > velocity_ * (1.0 + 1e-9) + 1e-9) {
@@ -152,8 +203,32 @@ class AxisWatch {
   static bool near(double x, double y) noexcept {
     return std::fabs(x - y) <= 1e-9 * (std::fabs(x) + std::fabs(y)) + 1e-9;
   }
+  FUZZ_CHECKER const char* check_two_speed(const plc::NCTOPLC_AXIS_REF& n) const noexcept {
+    const double v = std::fabs(n.SetVelo);
+    if (v != 0.0 && v != rapid_ && v != creep_)
+      return "two-speed set velocity not a contactor speed";
+    if (n.SetAcc != 0.0) return "two-speed set acceleration not 0";
+    if (std::fabs(n.ActVelo) > rapid_ * (1.0 + 1e-9))
+      return "two-speed actual velocity above rapid";
+    return nullptr;
+  }
+  // C6: the velocity is factor × the master's; the factor moves only where |a| <= AccBound.
+  FUZZ_CHECKER const char* check_cyclic(const plc::NCTOPLC_AXIS_REF& n, bool moved) const noexcept {
+    if (n.GearRatio == 0.0 && !left_coupling(n)) return "a coupled slave shows no gear ratio";
+    if (!plc::test_bit(n.StateDWord, plc::kStateOperational) ||
+        !plc::test_bit(master_->StateDWord, plc::kStateOperational)) {
+      return nullptr;
+    }
+    if (!near(n.SetVelo, n.GearRatio * master_->SetVelo)) {
+      return "cyclic slave set velocity is not gear ratio x master set velocity";
+    }
+    if (moved && std::fabs(n.SetAcc) > acc_bound_ * (1.0 + 1e-9) + 1e-9) {
+      return "cyclic slave factor moved with its acceleration above AccBound";
+    }
+    return nullptr;
+  }
   const char* check_following(const plc::NCTOPLC_AXIS_REF& n) const noexcept {
-    if (n.GearRatio == 0.0) return "a coupled slave shows no gear ratio";
+    if (n.GearRatio == 0.0 && !left_coupling(n)) return "a coupled slave shows no gear ratio";
     // Not checked while either axis is not operational: a master without its controller enable
     // publishes set values that follow its actual position after its slaves sampled it, and the
     // reaction of the slaves to that is SPEC C7, not built yet (docs/behaviour.md).
@@ -170,6 +245,12 @@ class AxisWatch {
     return nullptr;
   }
 
+  // SPEC C7 DELAYED (docs/behaviour.md "Error propagation"): a slave whose own error is raised
+  // leaves its master's coupling (no factor in force: GearRatio 0) but still shows as a slave
+  // until MC_GearOut, also after MC_Reset. Known from bit 6 (kStateErrorPropagationDelayed),
+  // which shows only on such a faulty axis, from its error's cycle on; kept while it shows as a
+  // slave (see check()).
+  bool left_coupling(const plc::NCTOPLC_AXIS_REF&) const noexcept { return left_; }
   static bool usable(double x) noexcept { return std::isfinite(x) && x > 0.0; }
   void widen_acceleration(double x) noexcept {
     if (usable(x)) acceleration_ = std::max(acceleration_, x);
@@ -239,6 +320,40 @@ class AxisWatch {
   double acceleration_ = 0.0;
   bool was_coupled_ = false;
   bool decoupled_ = false;  // decoupled in motion (C4): own limits unchecked until at rest
+  // Homing.
+  double homing_velocity_;
+  double jerk_;
+  bool homing_ = false;
+  double homing_bound_ = 0.0;
+  double last_v_ = 0.0;
+  double last_a_ = 0.0;
+  // Cyclic slave.
+  bool cyclic_ = false;
+  bool was_cyclic_ = false;
+  uint16_t cyclic_number_ = 0;
+  double acc_bound_ = 0.0;
+  double last_ratio_ = 0.0;
+  bool left_ = false;  // a slave that left its coupling (left_coupling())
+  // Two-speed axis.
+  bool two_speed_;
+  double rapid_;
+  double creep_;
 };
+
+// The 12-byte NC→I/O image of a two-speed axis (E4): both control bytes say the same, travel
+// and brake never together, the unused fields 0. nullptr when it holds.
+FUZZ_CHECKER inline const char* broken_two_speed_image(
+    const plc::NCTOIO_DRIVE_TWO_SPEED& image) noexcept {
+  if (!plc::control_bytes_consistent(image)) return "two-speed control bytes disagree";
+  const plc::TwoSpeedDriveCommand c = plc::read_control_byte(image.nControlByte);
+  if (c.brake && c.velocity != plc::TwoSpeedVelocity::kOff &&
+      c.direction != plc::TwoSpeedDirection::kNone) {
+    return "two-speed travel bit with the brake on";
+  }
+  if (image.nOutData1 != 0 || image.nOutData2 != 0 || image.nReserved != 0) {
+    return "two-speed unused image fields not 0";
+  }
+  return nullptr;
+}
 
 }  // namespace fuzz

@@ -6,7 +6,11 @@
 // holds, and faults injected: a feed enable or the controller enable lost, and axes whose drive
 // saturates at 50 mm/s so that a fast move runs into its following-error limit (0x4550). A
 // coupling program (bit 7 of the first byte) adds MC_GearIn (any master, ratio, denominator) and
-// MC_GearOut on every axis; a slave in gear is checked to follow its master.
+// MC_GearOut on every axis; a slave in gear is checked to follow its master. A feature program
+// (bit 4 of the first byte) adds, per axis, a homing configuration (reference cam, any homing
+// values), a two-speed axis or DELAYED error propagation (any delay, actual-value coupling), and
+// the operations MC_Home (any mode, position, cam signal), MC_GearInDyn (any factor per cycle,
+// AccBound, Enable toggled) and Kernel::push_by_hand (any axis index, any velocity).
 // Every PLC cycle calls every block of every axis once, then the NC cycle runs. Checked at every
 // cycle, each a crash when broken: the block output rules (block_rules.hpp) after every call, the
 // axis invariants (axis_watch.hpp: finite image, set velocity and acceleration within the limits,
@@ -18,6 +22,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -28,6 +33,7 @@
 #include "fail.hpp"
 #include "fb/fb.hpp"
 #include "nc_core/axis_config.hpp"
+#include "nc_core/config.hpp"
 #include "nc_core/kernel.hpp"
 
 namespace {
@@ -42,6 +48,12 @@ constexpr std::size_t kExecuteKinds = 13;
 constexpr uint8_t kCouplingProgram = 0x80U;
 constexpr std::size_t kPlainOps = 12;
 constexpr std::size_t kCouplingOps = 14;
+// Bit 4 of the first byte makes a feature program: a second configuration byte per axis (homing,
+// two-speed, error propagation) and three more operations (MC_Home, MC_GearInDyn, push by hand)
+// besides the coupling ones. The bit is clear in every kept input (corpus and regressions), so
+// they keep their meaning.
+constexpr uint8_t kFeatureProgram = 0x10U;
+constexpr std::size_t kFeatureOps = 18;
 
 // The blocks of one axis and the PLC program's own values for it.
 struct AxisProgram {
@@ -66,6 +78,19 @@ struct AxisProgram {
   // Coupling programs only (see kCouplingProgram): this axis as slave.
   fb::MC_GearIn gear_in;
   fb::MC_GearOut gear_out;
+  // Feature programs only (see kFeatureProgram).
+  fb::MC_Home home;
+  uint8_t cam_source = 0;  // 0: the kernel's simulated reference cam; 1: off; 2: on
+  bool cam = false;        // bCalibrationCam of this cycle
+  fb::MC_GearInDyn gear_dyn;
+  std::size_t dyn_master = 0;       // the master input of gear_dyn
+  std::size_t dyn_edge_master = 0;  // ... when gear_dyn posted its last coupling command
+  double dyn_edge_bound = 0.0;      // ... and its Acceleration (AccBound) then
+  // MC_Home and MC_GearInDyn are called once the program has set their inputs: an untouched
+  // MC_Home stays idle, and an untouched MC_GearInDyn would only write its default GearRatio
+  // over the program's raw GearRatio1 writes.
+  bool home_used = false;
+  bool dyn_used = false;
   std::size_t gear_master = 0;  // the master input of gear_in
   std::size_t edge_master = 0;  // the master input when gear_in posted its last command
   std::array<fb::MC_MoveRelative, kBurst> burst;
@@ -115,9 +140,61 @@ fb::MC_Direction direction(fuzz::ByteReader& in) {
   return static_cast<fb::MC_Direction>(b < 200 ? 1 + b % 4 : static_cast<int8_t>(b));
 }
 
+// Feature programs: the second configuration byte of an axis. Bits 0-1: 1 a homing axis (not
+// homed at the start, any homing values), 2 a two-speed axis (any two-speed values), 3 a homing
+// axis homed at the start; bit 2: DELAYED error propagation with any delay; bit 3: its slaves
+// follow its actual values (C8). A value the configuration rules refuse keeps the default.
+template <class T>
+void try_field(nc::AxisConfig& c, T nc::AxisConfig::*field, T value) {
+  const T before = c.*field;
+  c.*field = value;
+  try {
+    nc::validate(c);
+  } catch (const nc::ConfigError&) {
+    c.*field = before;
+  }
+}
+
+void feature_config(nc::AxisConfig& c, uint8_t feature, fuzz::ByteReader& in) {
+  if (fuzz::g_trace) std::fprintf(stderr, " feature 0x%X", feature);
+  const uint8_t kind = feature & 0x03U;
+  if (kind == 1 || kind == 3) {
+    c.homed_at_start = kind == 3;
+    c.homing_cam_search_positive = in.flag();
+    c.homing_sync_search_positive = in.flag();
+    try_field(c, &nc::AxisConfig::homing_velocity_to_cam, in.number());
+    try_field(c, &nc::AxisConfig::homing_velocity_off_cam, in.number());
+    try_field(c, &nc::AxisConfig::homing_sync_pulse_distance, in.number());
+    try_field(c, &nc::AxisConfig::homing_search_distance, in.number());
+    try_field(c, &nc::AxisConfig::homing_reference_position, in.number());
+    try_field(c, &nc::AxisConfig::homing_cam_position, in.number());
+    try_field(c, &nc::AxisConfig::homing_cam_width, in.number());
+  } else if (kind == 2) {
+    c = nc::AxisConfig{c.name};  // the servo variants do not apply
+    c.kind = nc::AxisKind::kTwoSpeed;
+    try_field(c, &nc::AxisConfig::rapid_velocity, in.number());
+    try_field(c, &nc::AxisConfig::creep_velocity, in.number());
+    try_field(c, &nc::AxisConfig::creep_distance_positive, in.number());
+    try_field(c, &nc::AxisConfig::creep_distance_negative, in.number());
+    try_field(c, &nc::AxisConfig::braking_distance_positive, in.number());
+    try_field(c, &nc::AxisConfig::braking_distance_negative, in.number());
+    try_field(c, &nc::AxisConfig::creep_distance_stop, in.number());
+    try_field(c, &nc::AxisConfig::two_speed_ramp_time, in.number());
+    try_field(c, &nc::AxisConfig::looping_distance, in.number());
+    try_field(c, &nc::AxisConfig::looping_distance_enabled, in.flag());
+  }
+  if ((feature & 0x04U) != 0) {
+    c.error_propagation_mode = nc::ErrorPropagation::kDelayed;
+    try_field(c, &nc::AxisConfig::error_propagation_delay, in.number());
+  }
+  if ((feature & 0x08U) != 0) c.couple_slave_to_actual_values = true;
+}
+
 // One PLC cycle of one axis: every block once, in a fixed order (the gear blocks in coupling
-// programs only, `master` being gear_in's master input).
-void plc_cycle(AxisProgram& a, plc::AXIS_REF& axis, const plc::AXIS_REF* master) {
+// programs only, `master` being gear_in's master input; MC_Home and MC_GearInDyn in feature
+// programs only, `dyn_master` being gear_dyn's master input).
+void plc_cycle(AxisProgram& a, plc::AXIS_REF& axis, const plc::AXIS_REF* master,
+               const plc::AXIS_REF* dyn_master) {
   a.power(axis);
   fuzz::call_checked(a.reset, axis);
   fuzz::call_checked(a.absolute, axis);
@@ -146,6 +223,20 @@ void plc_cycle(AxisProgram& a, plc::AXIS_REF& axis, const plc::AXIS_REF* master)
     if (const char* broken = fuzz::broken_output_rule(a.gear_in)) fuzz::fail(broken);
     if (a.gear_in.InGear && !a.gear_in.Busy) fuzz::fail("InGear without Busy");
     fuzz::call_checked(a.gear_out, axis);
+  }
+  if (dyn_master != nullptr && a.home_used) {
+    a.home.bCalibrationCam = a.cam;
+    fuzz::call_checked(a.home, axis);
+  }
+  if (dyn_master != nullptr && a.dyn_used) {
+    const uint16_t before = a.gear_dyn.command_number();
+    a.gear_dyn(*dyn_master, axis);
+    if (a.gear_dyn.command_number() != before) {
+      a.dyn_edge_master = a.dyn_master;
+      a.dyn_edge_bound = a.gear_dyn.Acceleration;
+    }
+    if (const char* broken = fuzz::broken_output_rule(a.gear_dyn)) fuzz::fail(broken);
+    if (a.gear_dyn.InGear && !a.gear_dyn.Busy) fuzz::fail("InGear without Busy");
   }
   a.status(axis);
   a.actual_position(axis);
@@ -246,26 +337,67 @@ void edit_execute_block(AxisProgram& a, fuzz::AxisWatch& watch, fuzz::ByteReader
   }
 }
 
+// Feature programs: MC_Home's inputs and its Execute toggled. A default homing (from rest or
+// aborting a move, with that move's dynamics) is a motion like any other for the watch.
+void edit_home(AxisProgram& a, fuzz::ByteReader& in) {
+  fb::MC_Home& h = a.home;
+  a.home_used = true;
+  const uint8_t mode = in.byte();
+  h.HomingMode = static_cast<fb::MC_HomingMode>(mode < 200 ? mode % 7 : static_cast<int8_t>(mode));
+  h.Position = in.flag() ? fb::DEFAULT_HOME_POSITION : in.number();
+  h.BufferMode = buffer_mode(in);
+  a.cam_source = static_cast<uint8_t>(in.below(3));
+  if (fuzz::g_trace) std::fprintf(stderr, " home mode %d cam %u", h.HomingMode, a.cam_source);
+  h.Execute = !h.Execute;
+}
+
+// Feature programs: MC_GearInDyn's factor (written every cycle), AccBound, master, Enable.
+void edit_gear_dyn(AxisProgram& a, std::size_t n_axes, fuzz::ByteReader& in) {
+  fb::MC_GearInDyn& g = a.gear_dyn;
+  a.dyn_used = true;
+  g.GearRatio = in.number();
+  if (in.flag()) g.Acceleration = in.number();
+  if (in.flag()) {
+    a.dyn_master = in.below(n_axes);
+    g.Enable = !g.Enable;
+  }
+}
+
 struct Program {
   nc::Kernel kernel;
   std::vector<plc::AXIS_REF*> axes;
   std::vector<AxisProgram> programs;
   std::vector<fuzz::AxisWatch> watches;
+  std::vector<std::string> names;
+  std::vector<const plc::NCTOIO_DRIVE_TWO_SPEED*> two_speed_images;
   int cycles = 0;
   bool coupling = false;
+  bool features = false;
 
   // One tick: the PLC calls every block of every axis, then one NC cycle; then the checks.
   void tick() {
+    if (features) {
+      // The cam signals of this cycle (a set-up lookup by name: outside the counted region).
+      for (std::size_t i = 0; i < axes.size(); ++i) {
+        AxisProgram& a = programs[i];
+        if (a.home_used)
+          a.cam = a.cam_source == 0 ? kernel.reference_cam(names[i]) : a.cam_source == 2;
+      }
+    }
     {
       const fuzz::AllocationRegion region;
       for (std::size_t i = 0; i < axes.size(); ++i) {
         AxisProgram& a = programs[i];
-        if (a.feeding && (a.feed_direction == 1 || a.feed_direction == -1) &&
+        plc_cycle(a, *axes[i], coupling ? axes[a.gear_master] : nullptr,
+                  features ? axes[a.dyn_master] : nullptr);
+        // The packet the NC reads is the one in PlcToNc: the feed of this cycle, or an older one
+        // when this cycle's was refused (a direction outside -1 … 1 writes nothing).
+        const plc::PLCTONC_AXIS_REF& out = axes[i]->PlcToNc;
+        if ((out.ExtSetDirection == 1 || out.ExtSetDirection == -1) &&
             (a.ext_enable.Execute ||
              plc::test_bit(axes[i]->NcToPlc.StateDWord, plc::kStateExtSetPointGenEnabled))) {
-          watches[i].allow_external(a.feed_v, a.feed_a);
+          watches[i].allow_external(out.ExtSetVelo, out.ExtSetAcc);
         }
-        plc_cycle(a, *axes[i], coupling ? axes[a.gear_master] : nullptr);
         watches[i].posted(*axes[i]);
       }
       kernel.cycle();
@@ -279,6 +411,16 @@ struct Program {
       const bool known =
           coupling && a.gear_in.InGear && axes[i]->NcToPlc.CmdNo == a.gear_in.command_number();
       watches[i].follow(known ? &axes[a.edge_master]->NcToPlc : nullptr);
+      if (features && a.gear_dyn.Busy && axes[i]->NcToPlc.CmdNo == a.gear_dyn.command_number()) {
+        // The cyclic coupling in force is gear_dyn's last one (master and AccBound: that edge's).
+        watches[i].follow_cyclic(&axes[a.dyn_edge_master]->NcToPlc, a.gear_dyn.command_number(),
+                                 a.dyn_edge_bound);
+      }
+      if (two_speed_images[i] != nullptr) {
+        if (const char* broken = fuzz::broken_two_speed_image(*two_speed_images[i])) {
+          fuzz::fail(broken);
+        }
+      }
       if (fuzz::g_trace && coupling) {
         std::fprintf(stderr, "  [%d] axis %zu gear: InGear %d number %u master %zu ratio %.17g\n",
                      cycles, i, a.gear_in.InGear ? 1 : 0, a.gear_in.command_number(), a.edge_master,
@@ -302,6 +444,32 @@ struct Program {
     }
     ++cycles;
   }
+
+  // Between cycles, as a test or sample would: a push is taken (from the next cycle on) or
+  // refused with one of its documented codes; either way no image changes now.
+  void push_by_hand(std::size_t index, double velocity) {
+    std::array<plc::NCTOPLC_AXIS_REF, kMaxAxes> before{};
+    for (std::size_t i = 0; i < axes.size(); ++i)
+      std::memcpy(&before[i], &axes[i]->NcToPlc, sizeof before[i]);  // padding too
+    const plc::ErrorCode code = kernel.push_by_hand(index, velocity);
+    if (fuzz::g_trace) std::fprintf(stderr, " push %zu -> 0x%X", index, plc::to_id(code));
+    switch (code) {
+      case plc::ErrorCode::kNone:
+      case plc::ErrorCode::kInvalidAxisReference:
+      case plc::ErrorCode::kParameterNotFinite:
+      case plc::ErrorCode::kVelocityNotAllowed:
+      case plc::ErrorCode::kAxisKindNotAllowed:
+      case plc::ErrorCode::kPushByHandControllerEnabled:
+        break;
+      default:
+        fuzz::fail("push_by_hand answered a code it does not document");
+    }
+    for (std::size_t i = 0; i < axes.size(); ++i) {
+      if (std::memcmp(&before[i], &axes[i]->NcToPlc, sizeof before[i]) != 0) {
+        fuzz::fail("push_by_hand changed an axis image");
+      }
+    }
+  }
 };
 
 nc::KernelConfig kernel_config(uint8_t b) {
@@ -315,13 +483,26 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
   fuzz::g_trace = std::getenv("FUZZ_TRACE") != nullptr;
   fuzz::ByteReader in(data, size);
   const uint8_t first = in.byte();
-  Program p{nc::Kernel(kernel_config(first)), {}, {}, {}, 0, (first & kCouplingProgram) != 0};
+  const bool features = (first & kFeatureProgram) != 0;
+  Program p{nc::Kernel(kernel_config(first)),
+            {},
+            {},
+            {},
+            {},
+            {},
+            0,
+            features || (first & kCouplingProgram) != 0,
+            features};
   const std::size_t n_axes = 1 + in.below(kMaxAxes);
   p.programs.resize(n_axes);
   for (std::size_t i = 0; i < n_axes; ++i) {
-    const nc::AxisConfig config = axis_config(i, in.byte());
+    nc::AxisConfig config = axis_config(i, in.byte());
+    if (features) feature_config(config, in.byte(), in);
     p.axes.push_back(&p.kernel.add_axis(config));
     p.watches.emplace_back(config);
+    p.names.push_back(config.name);
+    p.two_speed_images.push_back(
+        config.kind == nc::AxisKind::kTwoSpeed ? &p.kernel.two_speed_output(config.name) : nullptr);
     AxisProgram& a = p.programs[i];
     a.power.Enable = a.power.Enable_Positive = a.power.Enable_Negative = true;
     a.status.Enable = a.actual_position.Enable = a.axis_error.Enable = true;
@@ -332,7 +513,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
     const std::size_t axis_index = static_cast<std::size_t>(&a - p.programs.data());
     plc::AXIS_REF& axis = *p.axes[axis_index];
     fuzz::AxisWatch& watch = p.watches[axis_index];
-    const std::size_t op = in.below(p.coupling ? kCouplingOps : kPlainOps);
+    const std::size_t op =
+        in.below(features ? kFeatureOps : (p.coupling ? kCouplingOps : kPlainOps));
     if (fuzz::g_trace) std::fprintf(stderr, "\nop %zu axis %zu:", op, axis_index);
     switch (op) {
       case 0:
@@ -402,6 +584,15 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
         break;
       case 13:
         a.gear_out.Execute = !a.gear_out.Execute;
+        break;
+      case 14:
+        edit_home(a, in);
+        break;
+      case 15:
+        edit_gear_dyn(a, n_axes, in);
+        break;
+      case 16:
+        p.push_by_hand(in.below(n_axes + 1), in.number());  // index n_axes: unknown
         break;
       default: {
         const std::size_t k = 1 + in.below(64);

@@ -112,6 +112,51 @@ def gear_out(slave):
 
 
 COUPLING = 0x80  # first byte: a coupling program (MC_GearIn / MC_GearOut operations)
+FEATURES = 0x10  # first byte: a feature program (homing, two-speed, C6-C8; coupling ops too)
+
+
+def features_program(cycle=0, axes=((0, bytes([0])),), ops=()):
+    """A feature program: each axis is (variant, its feature byte and the values it reads)."""
+    out = bytes([FEATURES | cycle, len(axes) - 1])
+    for variant, feature in axes:
+        out += bytes([variant]) + feature
+    for op in ops:
+        out += op
+    return out
+
+
+def homing_feature(homed=False, cam=100, width=10, to_cam=100, off_cam=10, pulse=5):
+    """A homing axis (feature kind 1, or 3 homed at the start): cam search +, sync search -."""
+    return (bytes([3 if homed else 1, 1, 0]) + num(to_cam) + num(off_cam) + num(pulse)
+            + num(10000) + num(0) + num(cam) + num(width))
+
+
+def two_speed_feature():
+    """A two-speed axis with the defaults (rapid 500, creep 50, creep 100, braking 5 ...)."""
+    return (bytes([2]) + num(500) + num(50) + num(100) + num(100) + num(5) + num(5) + num(20)
+            + num(0.1) + num(30) + bytes([0]))
+
+
+def delayed_feature(delay, actual_values=False):
+    """DELAYED error propagation with `delay` s, optionally its slaves on its actual values."""
+    return bytes([0x04 | (0x08 if actual_values else 0)]) + num(delay)
+
+
+def home(axis, mode=0, position=None, cam_source=0):
+    """Toggles MC_Home's Execute; cam_source 0: the kernel's cam, 1: off, 2: on."""
+    pos = bytes([1]) if position is None else bytes([0]) + num(position)
+    return bytes([axis, 14, mode]) + pos + bytes([1, cam_source])
+
+
+def gear_in_dyn(slave, master, ratio, acc_bound=None, toggle=True):
+    """MC_GearInDyn: GearRatio (every cycle), AccBound, Enable toggled towards `master`."""
+    acc = bytes([0]) if acc_bound is None else bytes([1]) + num(acc_bound)
+    return bytes([slave, 15]) + num(ratio) + acc + (bytes([1, master]) if toggle else bytes([0]))
+
+
+def push(index, velocity):
+    """Kernel::push_by_hand(index, velocity) between two cycles."""
+    return bytes([0, 16, index]) + num(velocity)
 
 BLOCKS = {
     "move_absolute": blocks_program(ops=[run(0, 3), absolute(0, 500, 1000), run(0, 64), run(0, 64)]),
@@ -150,6 +195,26 @@ BLOCKS = {
                                             velocity(0, 500), run(0, 40), gear_in(1, 0, 1.5),
                                             gear_in(1, 0, "huge"), run(0, 20), stop(0), run(0, 64),
                                             gear_out(3), run(0, 3)]),
+    "homing_default": features_program(cycle=3, axes=((0, homing_feature()),),
+                                       ops=[run(0, 3), home(0)] + [run(0, 64)] * 9),
+    "homing_aborting_move": features_program(
+        axes=((0, homing_feature(cam=5000)),),
+        ops=[run(0, 3), absolute(0, 100000, 2000, 20000, 20000, 1e6), run(0, 39), home(0),
+             run(0, 2), velocity(0, 500), run(0, 64), home(0), run(0, 20), halt(0), run(0, 64),
+             home(0, mode=4, position=10), run(0, 5)]),
+    "two_speed": features_program(axes=((0, two_speed_feature()),),
+                                  ops=[run(0, 3), absolute(0, 1000, 500), run(0, 64), run(0, 64),
+                                       stop(0), run(0, 64), execute(0, 0), run(0, 3)]),
+    "gear_in_dyn": features_program(axes=((0, bytes([0])), (0, bytes([0]))),
+                                    ops=[run(0, 3), gear_in_dyn(1, 0, 1, 8000), run(0, 3),
+                                         velocity(0, 1000), run(0, 64), run(0, 64),
+                                         gear_in_dyn(1, 0, 1.5, toggle=False), run(0, 64),
+                                         run(0, 64), gear_in_dyn(1, 0, 1.5), run(0, 3)]),
+    "delayed_push_by_hand": features_program(
+        axes=((0, delayed_feature(0.05, actual_values=True)), (0, bytes([0]))),
+        ops=[run(0, 3), gear_in(1, 0, 2), run(0, 3), fault(0, 2), run(0, 2), push(0, 100),
+             run(0, 64), push(0, 0), push(1, 50), push(2, 10), run(0, 20), fault(0, 2), run(0, 20),
+             absolute(0, 50, 1000), run(0, 64), fault(1, 0), run(0, 64)]),
     "bad_inputs": blocks_program(ops=[run(0, 3), absolute(0, "nan", 1000), run(0, 3),
                                      absolute(0, 100, "inf"), run(0, 3), absolute(0, 100, -5),
                                      run(0, 3), absolute(0, "huge", 1000), run(0, 3),

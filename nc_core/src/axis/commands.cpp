@@ -244,17 +244,19 @@ ErrorCode ServoAxis::start_halt_or_stop(const plc::Command& command) noexcept {
   const bool stop = command.type == CommandType::kStop;
   if (const ErrorCode code = check_halt_or_stop(command); code != ErrorCode::kNone) return code;
 
-  // 0 = the running motion's deceleration and jerk, or the axis default when nothing runs.
+  // 0 = the running motion's deceleration and jerk (a homing's too, K8), or the axis default
+  // when nothing runs.
+  const MasterJob& running = running_motion();
   const bool motion =
-      job_.is_motion() || job_.kind() == JobKind::kHalt || job_.kind() == JobKind::kStop;
-  Limits limits{motion ? job_.limits().velocity : config_.max_velocity,
-                motion ? job_.limits().acceleration : config_.acceleration,
-                motion ? job_.limits().deceleration : config_.deceleration,
-                motion ? job_.limits().jerk : config_.jerk};
+      running.is_motion() || running.kind() == JobKind::kHalt || running.kind() == JobKind::kStop;
+  Limits limits{motion ? running.limits().velocity : config_.max_velocity,
+                motion ? running.limits().acceleration : config_.acceleration,
+                motion ? running.limits().deceleration : config_.deceleration,
+                motion ? running.limits().jerk : config_.jerk};
   // Seed 000 §2.2 "Emergency stop": the command's deceleration and jerk replace the running
   // motion's only when both are larger, and never in the brake phase (the braking that runs goes
   // on: a stop with the running motion's values continues it).
-  const bool braking = job_.in_brake_phase(cycle_time_);
+  const bool braking = running.in_brake_phase(cycle_time_);
   if (!braking && command.deceleration > limits.deceleration && command.jerk > limits.jerk) {
     limits.deceleration = command.deceleration;
     limits.jerk = command.jerk;

@@ -79,7 +79,7 @@ bool ServoAxis::plan_table(const KinematicState& from, double target, const Limi
 
 ErrorCode ServoAxis::start_positioning(uint16_t number, double target,
                                        const Limits& limits) noexcept {
-  const Limits planned = with_running_jerk(limits, set_, job_, config_.max_velocity);
+  const Limits planned = with_running_jerk(limits, set_, running_motion(), config_.max_velocity);
   // Planned at 100 % first: its peak is the level reduced at the start (types 1 and 3).
   scratch_ = plan_position(set_, target, planned);
   if (!scratch_.ok()) return scratch_.error();
@@ -99,7 +99,7 @@ ErrorCode ServoAxis::start_positioning(uint16_t number, double target,
 
 ErrorCode ServoAxis::start_continuous(uint16_t number, double velocity,
                                       const Limits& limits) noexcept {
-  const Limits planned = with_running_jerk(limits, set_, job_, config_.max_velocity);
+  const Limits planned = with_running_jerk(limits, set_, running_motion(), config_.max_velocity);
   const double direction = velocity < 0.0 ? -1.0 : 1.0;
   const double speed = std::abs(velocity);
   const double level = speed * override_factor(job_.override_value());

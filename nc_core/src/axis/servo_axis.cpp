@@ -312,6 +312,8 @@ void ServoAxis::finish_job() noexcept {
 
 void ServoAxis::raise_error(ErrorCode code, bool own) noexcept {
   if (!channel_.raise(code)) return;  // the first error stays until reset
+  // The motion the error ramp takes over: a homing's stays readable after homing_.clear().
+  const MasterJob& running = running_motion();
   error_event_ = true;
   ++errors_raised_;
   has_been_stopped_ = true;
@@ -343,7 +345,7 @@ void ServoAxis::raise_error(ErrorCode code, bool own) noexcept {
   // running job's larger jerk where the emergency jerk would pass the max velocity (K5).
   const Limits limits = with_running_jerk({config_.max_velocity, config_.acceleration,
                                            config_.emergency_deceleration, config_.emergency_jerk},
-                                          set_, job_, config_.max_velocity);
+                                          set_, running, config_.max_velocity);
   scratch_ = plan_stop(set_, limits.deceleration, limits.jerk);
   if (!scratch_.ok()) {
     job_.clear();

@@ -151,6 +151,11 @@ class ServoAxis {
   void generate_set_values(std::span<const AxisSnapshot> snapshots) noexcept;
   // The one basic source of this cycle (set_value_source.hpp).
   SetValueSource source() const noexcept;
+  // The motion a new job, a stop or the error ramp takes over (its limits, K4, K5, K8): the
+  // running homing's, else the job's.
+  const MasterJob& running_motion() const noexcept {
+    return homing_.active() ? homing_.motion() : job_;
+  }
   void control_and_drive() noexcept;
   void run_monitors() noexcept;
   void finish_job() noexcept;

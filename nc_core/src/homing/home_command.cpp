@@ -69,7 +69,12 @@ ErrorCode ServoAxis::start_home(const plc::Command& command) noexcept {
   }
   const uint16_t running =
       job_.active() ? job_.number() : (homing_.active() ? homing_.number() : 0);
-  if (!homing_.start(command.number, set_, home, config_, scratch_)) {
+  // From the set state, with the aborted motion's larger jerk where the axis's own would ramp
+  // its acceleration down past the max velocity, as a move does (K4, K8).
+  const Limits own{config_.homing_velocity_to_cam, config_.acceleration, config_.deceleration,
+                   config_.jerk};
+  const double jerk = with_running_jerk(own, set_, running_motion(), config_.max_velocity).jerk;
+  if (!homing_.start(command.number, set_, home, config_, jerk, scratch_)) {
     return ErrorCode::kPlannerNoSolution;
   }
   job_.clear();

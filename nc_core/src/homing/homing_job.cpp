@@ -17,7 +17,7 @@ bool HomingJob::plan(const KinematicState& from, double velocity, bool stop,
 }
 
 bool HomingJob::start(uint16_t number, const KinematicState& from, double home,
-                      const AxisConfig& config, Profile& scratch) noexcept {
+                      const AxisConfig& config, double jerk, Profile& scratch) noexcept {
   number_ = number;
   home_ = home;
   cam_direction_ = config.homing_cam_search_positive ? 1.0 : -1.0;
@@ -25,8 +25,7 @@ bool HomingJob::start(uint16_t number, const KinematicState& from, double home,
   velocity_off_cam_ = config.homing_velocity_off_cam;
   pulse_distance_ = config.homing_sync_pulse_distance;
   search_distance_ = config.homing_search_distance;
-  limits_ =
-      Limits{config.homing_velocity_to_cam, config.acceleration, config.deceleration, config.jerk};
+  limits_ = Limits{config.homing_velocity_to_cam, config.acceleration, config.deceleration, jerk};
   travel_ = 0.0;
   last_position_ = from.p;
   cam_seen_ = false;

@@ -44,10 +44,11 @@ class HomingJob {
     ErrorCode error = ErrorCode::kNone;
   };
 
-  // Starts from the set state `from` towards the cam; `home` is where the reference lands.
-  // False when the planner refuses (the job stays idle).
+  // Starts from the set state `from` towards the cam; `home` is where the reference lands. The
+  // whole sequence runs with the axis's A+, A- and `jerk` (the axis's J, or the larger J of an
+  // aborted motion, fuzz finding K8). False when the planner refuses (the job stays idle).
   bool start(uint16_t number, const KinematicState& from, double home, const AxisConfig& config,
-             Profile& scratch) noexcept;
+             double jerk, Profile& scratch) noexcept;
   Step advance(const Inputs& in, double cycle_time, Profile& scratch) noexcept;
   void clear() noexcept { phase_ = Phase::kIdle; }
 
@@ -57,6 +58,8 @@ class HomingJob {
     return phase_ == Phase::kStopping && motion_.generation_ended();
   }
   uint16_t number() const noexcept { return number_; }
+  // The motion that samples the sequence (its limits: the running jerk for what aborts it).
+  const MasterJob& motion() const noexcept { return motion_; }
 
  private:
   enum class Phase : uint8_t { kIdle, kTowardsCam, kOffCam, kSyncPulse, kStopping };
