@@ -388,10 +388,8 @@ TEST_CASE("a run-up backwards before a large end velocity is anchored at its v =
   const double v_end = 600.1572265625;
   const Profile prof = nc::plan_position(s, target, v_end, l);
   REQUIRE(prof.ok());
-  profile_checks::StartRelief relief;
-  relief.over_acceleration = true;
   const profile_checks::Finding f =
-      profile_checks::check_passing_profile(prof, s, target, v_end, l, {}, relief);
+      profile_checks::check_passing_profile(prof, s, target, v_end, l, {}, acceleration_relief());
   INFO(profile_checks::to_string(f));
   CHECK(f.ok());
   REQUIRE(prof.segment_count() == 7);

@@ -142,6 +142,36 @@ TEST_CASE("a stop re-plans from the start of its last ramp to exactly that ramp"
   CHECK(worst <= 1e-9);
 }
 
+namespace {
+
+// A plan to rest whose switch was hard to find (P19, P20): within the contract (`relief` for a
+// start outside the limits), the push and the stop's two ramps, the switch at `switch_t` and the
+// whole at `total` (both to 1e-9), continuous at the switch to the rounding of positions of 1e-8,
+// and time-optimal from every state of it (the old, wrong switch `old_switch` among the
+// re-planning times).
+Profile check_rest_switch(const KinematicState& start, double target, const Limits& l,
+                          const profile_checks::StartRelief& relief, double switch_t, double total,
+                          double old_switch) {
+  const Profile prof = nc::plan_position(start, target, l);
+  REQUIRE(prof.ok());
+  const profile_checks::Finding f =
+      profile_checks::check_position_profile(prof, start, target, l, {}, relief);
+  INFO(profile_checks::to_string(f));
+  CHECK(f.ok());
+  REQUIRE(prof.segment_count() == 3);
+  CHECK(prof.segment(0).duration == Approx(switch_t).epsilon(1e-9));
+  CHECK(prof.duration() == Approx(total).epsilon(1e-9));
+  const nc::KinematicState end0 =
+      profile_checks::advance(prof.segment(0), prof.segment(0).duration);
+  CHECK(std::fabs(end0.p - prof.segment(1).p) <= 1e-20);
+  const double worst = worst_bellman_miss(
+      prof, old_switch, [&](const KinematicState& x) { return nc::plan_position(x, target, l); });
+  CHECK(worst <= kBellman);
+  return prof;
+}
+
+}  // namespace
+
 // Fuzz finding P19: a plan to rest from v = 7.2e-9 mm/s with a = -7.0e-9 mm/s² (twice A-, against
 // the motion) to a target 7.0e-9 mm ahead, A- = 3.5e-9, J = 3.5e-9. The push's first ramp (a at
 // +J) is the stop's own ramp back to A-, so the stop point stays where it is for the first 1.01 s
@@ -155,31 +185,15 @@ TEST_CASE("a plan to rest from an acceleration beyond A- searches its switch pas
   const double target = 7.0415289535752134e-09;
   const Limits l{164761066496.47064, 2.0574137664720906e-06, 3.4925699845285376e-09,
                  3.5079210647381842e-09};
-  const Profile prof = nc::plan_position(start, target, l);
-  REQUIRE(prof.ok());
   profile_checks::StartRelief relief;
   relief.over_acceleration = true;
-  const profile_checks::Finding f =
-      profile_checks::check_position_profile(prof, start, target, l, {}, relief);
-  INFO(profile_checks::to_string(f));
-  CHECK(f.ok());
-  // Push (a at +J), then the stop's rise and fall: the switch past the flat stretch,
-  // (|a0| - A-) / J = 1.0117 s.
-  REQUIRE(prof.segment_count() == 3);
+  // Push (a at +J), then the stop's rise and fall: the switch (2.656 s) past the flat stretch,
+  // (|a0| - A-) / J = 1.0117 s; the old switch at 1.46 s.
+  const Profile prof = check_rest_switch(start, target, l, relief, 2.655771577181437,
+                                         4.641438469864922, 1.4597050064061259);
   const double flat = (-start.a - l.deceleration) / l.jerk;
   CHECK(flat == Approx(1.0117).epsilon(1e-4));
   CHECK(prof.segment(0).duration > flat);
-  CHECK(prof.segment(0).duration == Approx(2.655771577181437).epsilon(1e-9));
-  CHECK(prof.duration() == Approx(4.641438469864922).epsilon(1e-9));
-  // The push's end and the stop's start agree to the rounding of positions of 1e-8.
-  const nc::KinematicState end0 =
-      profile_checks::advance(prof.segment(0), prof.segment(0).duration);
-  CHECK(std::fabs(end0.p - prof.segment(1).p) <= 1e-20);
-  // Time-optimal from every state of it (the old switch at 1.46 s among the re-planning times).
-  const double worst = worst_bellman_miss(prof, 1.4597050064061259, [&](const KinematicState& x) {
-    return nc::plan_position(x, target, l);
-  });
-  CHECK(worst <= kBellman);
 }
 
 // Issue 14 item 1 (the Bellman suite's end-velocity case, NCSDK_PROFILE_SEED 1, 10 and 12): a
@@ -250,19 +264,6 @@ TEST_CASE("a plan to rest whose stop point starts nearly flat finds its switch",
   const double target = 7.1579467568195242e-09;
   const Limits l{128.00002419665364, 163216653698.52249, 8.381903171540468e-09,
                  3.4957532198052841e-09};
-  const Profile prof = nc::plan_position(start, target, l);
-  REQUIRE(prof.ok());
-  const profile_checks::Finding f = profile_checks::check_position_profile(prof, start, target, l);
-  INFO(profile_checks::to_string(f));
-  CHECK(f.ok());
-  REQUIRE(prof.segment_count() == 3);
-  CHECK(prof.segment(0).duration == Approx(2.6836719609189457).epsilon(1e-9));
-  CHECK(prof.duration() == Approx(4.7207379403815857).epsilon(1e-9));
-  const nc::KinematicState end0 =
-      profile_checks::advance(prof.segment(0), prof.segment(0).duration);
-  CHECK(std::fabs(end0.p - prof.segment(1).p) <= 1e-20);
-  const double worst = worst_bellman_miss(prof, 1.5911744304771096, [&](const KinematicState& x) {
-    return nc::plan_position(x, target, l);
-  });
-  CHECK(worst <= kBellman);
+  check_rest_switch(start, target, l, {}, 2.6836719609189457, 4.7207379403815857,
+                    1.5911744304771096);
 }
