@@ -10,6 +10,9 @@ namespace nc::detail {
 namespace {
 
 double modulo(double p, double factor) noexcept {
+  // Within the first period the formula gives p itself (floor 0; p + 0.0 as it turns -0.0 into
+  // +0.0): no division. `factor` is finite and > 0 (AxisConfig validation).
+  if (p >= 0.0 && p < factor) return p + 0.0;
   double m = p - factor * floor_exact(p / factor);
   if (m >= factor || m < 0.0) m = 0.0;  // rounding at the period edge
   return m;
