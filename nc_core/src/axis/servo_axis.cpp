@@ -12,6 +12,9 @@ using plc::CommandState;
 ServoAxis::ServoAxis(const AxisConfig& config, double cycle_time, std::size_t index,
                      Profile& scratch)
     : cycle_time_(cycle_time), index_(index), scratch_(scratch), config_(config) {
+  encoder_ = config_.kind == AxisKind::kEncoder;
+  modulo_factor_ = config_.modulo_factor;
+  standstill_window_ = config_.standstill_window;
   controller_.kv = config_.position_kv;
   controller_.feed_forward = config_.velocity_feed_forward;
   drive_.configure(config_, cycle_time_, 0.0);
@@ -248,7 +251,7 @@ SetValueSource ServoAxis::source() const noexcept {
 }
 
 void ServoAxis::control_and_drive() noexcept {
-  if (config_.kind == AxisKind::kEncoder) {
+  if (encoder_) {
     // Encoder / virtual axis: no controller, the actual values are the set values.
     const KinematicState& command = drive_command();
     drive_.follow(command.p, command.v, command.a);

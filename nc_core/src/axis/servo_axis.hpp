@@ -326,6 +326,10 @@ class ServoAxis {
   std::unique_ptr<TwoSpeedAxis> two_speed_;
   double cycle_time_;
   std::size_t index_;
+  // The configuration values a steady cycle reads, copied here (config_ below stays cold).
+  bool encoder_ = false;  // config_.kind == AxisKind::kEncoder
+  double modulo_factor_ = 360.0;
+  double standstill_window_ = 0.0;
   PositionController controller_{};
   Drive drive_{};
   Monitors monitors_{};
