@@ -106,19 +106,25 @@ void Kernel::cycle() noexcept {
   detail::CouplingPort port{axes_, couplings_};
   for (std::size_t i = 0; i < n; ++i)
     axes_[i]->phase_commands(port);
-  // Without couplings no axis reads another, so the phases run over a block of kBlockAxes axes
-  // before the next block: one block's data stays in the cache from phase (b) to (f). With
-  // couplings the block is the whole kernel (a group reaction needs all its members' errors).
-  // So is an engaged HLI stage (phase (c) needs every axis's program position).
+  // With couplings the phases run over the whole kernel, phase by phase (a slave reads its
+  // master's set values, a group reaction needs all its members' errors); so they do while the
+  // HLI stage is engaged (phase (c) needs every axis's program position). Without either no
+  // axis reads another, so each axis runs phases (b) to (f) before the next one: its data
+  // stays in the cache and the kernel loops once.
   const bool hli = hli_->begin_cycle();
-  const std::size_t block = couplings_.has_couplings() || hli ? n : kBlockAxes;
-  for (std::size_t first = 0; first < n; first += block)
-    run_phases(first, std::min(n, first + block), counter);
+  if (couplings_.has_couplings() || hli) {
+    run_phases(0, n, counter);
+  } else {
+    for (std::size_t i = 0; i < n; ++i)
+      axes_[i]->run_alone(snapshots_[i], snapshots_, counter);
+  }
   mark_ready_groups();
   cycles_ = counter;
 }
 
 void Kernel::mark_ready_groups() noexcept {
+  // Without couplings every axis heads a group of its own: its phase_monitors() told it already.
+  if (!couplings_.has_couplings()) return;
   const std::size_t n = axes_.size();
   for (std::size_t i = 0; i < n; ++i)
     group_ready_[i] = 1;

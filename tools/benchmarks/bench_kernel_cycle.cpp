@@ -21,17 +21,6 @@
 
 namespace {
 
-nc::AxisConfig bench_axis(std::size_t i) {
-  nc::AxisConfig c;
-  c.name = "axis" + std::to_string(i);
-  if (i % 2 == 1) {
-    c.drive_model = nc::DriveModel::kFirstOrderLag;
-    c.drive_time_constant = 0.002;
-    c.drive_dead_time = 0.002;
-  }
-  return c;
-}
-
 void enable(plc::AXIS_REF& axis) {
   axis.PlcToNc.ControlDWord = (1U << plc::kControlEnable) | (1U << plc::kControlFeedEnablePlus) |
                               (1U << plc::kControlFeedEnableMinus);
@@ -44,7 +33,7 @@ void BM_KernelCycle(benchmark::State& state) {
   std::vector<plc::AXIS_REF*> axes;
   bench::BackAndForth moves(n);
   for (std::size_t i = 0; i < n; ++i) {
-    axes.push_back(&kernel.add_axis(bench_axis(i)));
+    axes.push_back(&kernel.add_axis(bench::kernel_axis(i)));
     enable(*axes.back());
   }
   for (auto _ : state) {
@@ -64,7 +53,7 @@ void BM_KernelCycleWithBlocks(benchmark::State& state) {
   nc::Kernel kernel;
   std::vector<plc::AXIS_REF*> axes;
   for (std::size_t i = 0; i < n; ++i)
-    axes.push_back(&kernel.add_axis(bench_axis(i)));
+    axes.push_back(&kernel.add_axis(bench::kernel_axis(i)));
   std::vector<fb::MC_Power> power(n);
   std::vector<fb::MC_MoveAbsolute> move(n);
   std::vector<bool> forward(n, true);

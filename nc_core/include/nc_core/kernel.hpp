@@ -107,16 +107,14 @@ class Kernel {
   double time() const noexcept { return static_cast<double>(cycles_) * config_.cycle_time; }
 
  private:
-  // Axes per block of the phase loops while nothing is coupled (see cycle()).
-  static constexpr std::size_t kBlockAxes = 32;
-
   detail::ServoAxis& find(std::string_view name) const;
   // Phases (a) … (f) over axes [first, last) of the set-value order.
   void run_phases(std::size_t first, std::size_t last, uint64_t counter) noexcept;
   // Phase (e), with couplings: an axis's new error reaches its whole group (SPEC C7).
   void react_in_groups() noexcept;
-  // After all phases: tells each group's head whether its group has no error and every axis
-  // enabled (the precondition of SPEC C8 case 2, ServoAxis::follows_by_hand()).
+  // After all phases, with couplings: tells each group's head whether its group has no error and
+  // every axis enabled (the precondition of SPEC C8 case 2, ServoAxis::follows_by_hand()). An
+  // uncoupled axis (a group of its own) knows it from its own monitor phase.
   void mark_ready_groups() noexcept;
 
   KernelConfig config_;

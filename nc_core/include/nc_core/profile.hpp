@@ -76,6 +76,8 @@ class Profile {
   // Profile.
   KinematicState at(double t) const noexcept;
   double jerk_at(double t) const noexcept;
+  // at(t), with jerk_at(t) into `jerk`: one segment search for both (the per-cycle sample).
+  KinematicState at(double t, double& jerk) const noexcept;
   KinematicState start_state() const noexcept { return start_; }
   KinematicState final_state() const noexcept { return final_; }
   // True for plan_velocity's profiles: past the end the motion goes on at the final velocity

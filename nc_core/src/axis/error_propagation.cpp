@@ -39,10 +39,11 @@ ErrorCode ServoAxis::release_detached(const plc::Command& command, CouplingPort&
 }
 
 bool ServoAxis::follows_by_hand() const noexcept {
+  // Only the head of a group: a master that is no slave (nor a slave that left on an error).
+  // (No slaves first: that is the steady cycle's answer.)
+  if (slave_count_ == 0 || slave_link_.coupled || slave_link_.detached) return false;
   if (!config_.couple_slave_to_actual_values || config_.kind != AxisKind::kContinuous) return false;
   if (channel_.controller_enabled() || channel_.has_error()) return false;
-  // Only the head of a group: a master that is no slave (nor a slave that left on an error).
-  if (slave_link_.coupled || slave_link_.detached || slave_count_ == 0) return false;
   return by_hand_ || group_ready_;
 }
 
@@ -65,7 +66,7 @@ bool ServoAxis::update_by_hand() noexcept {
 }
 
 bool ServoAxis::drives_slaves_by_actual() const noexcept {
-  if (!config_.couple_slave_to_actual_values || slave_count_ == 0) return false;
+  if (slave_count_ == 0 || !config_.couple_slave_to_actual_values) return false;
   if (config_.kind == AxisKind::kTwoSpeed) return false;
   if (by_hand_) return true;  // case 2
   // Case 1: the axis's own error in DELAYED mode, until MC_Reset.

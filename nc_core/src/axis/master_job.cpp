@@ -211,8 +211,10 @@ KinematicState MasterJob::advance(double cycle_time) noexcept {
     // The hold goes on past the end of the profile: at() extrapolates it. A hold at 0 (override
     // 0) is not "reached": InVelocity means moving at the commanded level.
     if (at_end) reached_ = profile_.final_state().v != 0.0;
-    jerk_ = at_end ? 0.0 : chain_.velocity(profile_.jerk_at(t));
-    state_ = chain_.state(profile_.at(t));
+    double jerk = 0.0;
+    const KinematicState sample = profile_.at(t, jerk);
+    jerk_ = at_end ? 0.0 : chain_.velocity(jerk);
+    state_ = chain_.state(sample);
     return state_;
   }
   if (at_end) {
@@ -223,8 +225,10 @@ KinematicState MasterJob::advance(double cycle_time) noexcept {
     state_ = chain_.state(passing() ? profile_.at(t) : profile_.final_state());
     return state_;
   }
-  jerk_ = chain_.velocity(profile_.jerk_at(t));
-  state_ = chain_.state(profile_.at(t));
+  double jerk = 0.0;
+  const KinematicState sample = profile_.at(t, jerk);  // one search for p, v, a and j
+  jerk_ = chain_.velocity(jerk);
+  state_ = chain_.state(sample);
   return state_;
 }
 

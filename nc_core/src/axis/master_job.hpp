@@ -207,7 +207,6 @@ class MasterJob {
  private:
   void install(const Profile& profile, bool final) noexcept;
 
-  Profile profile_{};
   JobKind kind_ = JobKind::kNone;
   uint16_t number_ = 0;
   uint64_t k_ = 0;
@@ -228,6 +227,7 @@ class MasterJob {
   uint32_t handled_override_ = plc::kOverrideFull;
   Activation activation_{};
   DecouplingChain chain_{};  // empty except after an online decoupling, until the first replan
+  Profile profile_{};        // last: a cycle reads its header and one segment, not all of it
 };
 
 // The limits a new job or the error ramp runs with from the set state `from` (fuzz findings K4,

@@ -35,38 +35,4 @@ void Monitors::configure(const AxisConfig& config, double cycle_time) noexcept {
   max_ = config.sw_limit_max;
 }
 
-bool Monitors::following_error(double lag, bool armed) noexcept {
-  if (!fe_enabled_ || !armed || !(std::abs(lag) > fe_limit_)) {
-    fe_count_ = 0;
-    return false;
-  }
-  ++fe_count_;
-  return fe_count_ > fe_filter_cycles_;
-}
-
-void Monitors::windows(double actual, double target, bool settled) noexcept {
-  if (!settled) {
-    reset_windows();
-    return;
-  }
-  const double distance = std::abs(actual - target);
-  in_area_ = !pr_enabled_ || distance <= pr_window_;
-  if (!tw_enabled_) {
-    in_target_ = true;
-    return;
-  }
-  if (distance <= tw_window_) {
-    if (tw_count_ < tw_cycles_) ++tw_count_;
-  } else {
-    tw_count_ = 0;
-  }
-  in_target_ = tw_count_ >= tw_cycles_;
-}
-
-void Monitors::reset_windows() noexcept {
-  tw_count_ = 0;
-  in_target_ = false;
-  in_area_ = false;
-}
-
 }  // namespace nc::detail

@@ -14,6 +14,7 @@
 // configure() is set-up; the rest are cycle functions.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 
 #include "nc_core/axis_config.hpp"
@@ -66,5 +67,40 @@ class Monitors {
   double min_ = 0.0;
   double max_ = 0.0;
 };
+
+// Cycle functions, inline: the monitor phase calls them for every axis in every cycle.
+inline bool Monitors::following_error(double lag, bool armed) noexcept {
+  if (!fe_enabled_ || !armed || !(std::abs(lag) > fe_limit_)) {
+    fe_count_ = 0;
+    return false;
+  }
+  ++fe_count_;
+  return fe_count_ > fe_filter_cycles_;
+}
+
+inline void Monitors::windows(double actual, double target, bool settled) noexcept {
+  if (!settled) {
+    reset_windows();
+    return;
+  }
+  const double distance = std::abs(actual - target);
+  in_area_ = !pr_enabled_ || distance <= pr_window_;
+  if (!tw_enabled_) {
+    in_target_ = true;
+    return;
+  }
+  if (distance <= tw_window_) {
+    if (tw_count_ < tw_cycles_) ++tw_count_;
+  } else {
+    tw_count_ = 0;
+  }
+  in_target_ = tw_count_ >= tw_cycles_;
+}
+
+inline void Monitors::reset_windows() noexcept {
+  tw_count_ = 0;
+  in_target_ = false;
+  in_area_ = false;
+}
 
 }  // namespace nc::detail

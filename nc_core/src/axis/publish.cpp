@@ -10,6 +10,9 @@ namespace nc::detail {
 namespace {
 
 double modulo(double p, double factor) noexcept {
+  // Within the first period the formula gives p itself (floor 0; p + 0.0 as it turns -0.0 into
+  // +0.0): no division. `factor` is finite and > 0 (AxisConfig validation).
+  if (p >= 0.0 && p < factor) return p + 0.0;
   double m = p - factor * floor_exact(p / factor);
   if (m >= factor || m < 0.0) m = 0.0;  // rounding at the period edge
   return m;
@@ -35,8 +38,8 @@ void ServoAxis::phase_publish(uint64_t cycle_counter) noexcept {
   out.ActVelo = drive_.velocity();
   out.ActAcc = drive_.acceleration();
   out.PosDiff = command.p - actual;
-  out.ModuloActPos = modulo(actual, config_.modulo_factor);
-  out.ModuloSetPos = modulo(command.p, config_.modulo_factor);
+  out.ModuloActPos = modulo(actual, modulo_factor_);
+  out.ModuloSetPos = modulo(command.p, modulo_factor_);
   out.TargetPos = target_;
   out.TargetVelo = target_velocity();
   out.CompensationDistance = stack_.compensation().done();  // travel-relative, as D
@@ -66,7 +69,7 @@ void ServoAxis::phase_publish(uint64_t cycle_counter) noexcept {
   };
   set_bit(plc::kStateOperational, enabled && !error);
   set_bit(plc::kStateHomed, homed_);
-  set_bit(plc::kStateNotMoving, std::abs(drive_.velocity()) < config_.standstill_window);
+  set_bit(plc::kStateNotMoving, std::abs(drive_.velocity()) < standstill_window_);
   set_bit(plc::kStateInPositionArea, monitors_.in_position_area());
   set_bit(plc::kStateInTargetPosition, monitors_.in_target_position());
   set_bit(plc::kStateHasBeenStopped, has_been_stopped_);

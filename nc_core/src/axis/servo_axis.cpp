@@ -11,7 +11,10 @@ using plc::CommandState;
 
 ServoAxis::ServoAxis(const AxisConfig& config, double cycle_time, std::size_t index,
                      Profile& scratch)
-    : config_(config), cycle_time_(cycle_time), index_(index), scratch_(scratch) {
+    : cycle_time_(cycle_time), index_(index), scratch_(scratch), config_(config) {
+  encoder_ = config_.kind == AxisKind::kEncoder;
+  modulo_factor_ = config_.modulo_factor;
+  standstill_window_ = config_.standstill_window;
   controller_.kv = config_.position_kv;
   controller_.feed_forward = config_.velocity_feed_forward;
   drive_.configure(config_, cycle_time_, 0.0);
@@ -33,8 +36,10 @@ void ServoAxis::phase_commands(CouplingPort& port) noexcept {
   read_override();
   handle_commands(port);
   check_enables();
-  run_buffer(port);  // command_buffer.cpp: a waiting command takes over
-  run_online_functions();
+  // command_buffer.cpp: a waiting command takes over; a pass left alone stops. Neither without
+  // a waiting command or a pass.
+  if (buffer_.waiting || job_.passing()) run_buffer(port);
+  if (job_.is_motion()) run_online_functions();  // only a motion job has online functions
 }
 
 void ServoAxis::phase_set_values(AxisSnapshot& snapshot,
@@ -64,7 +69,9 @@ void ServoAxis::phase_set_values(AxisSnapshot& snapshot,
   snapshot.set_velocity = set_.v;
   snapshot.set_acceleration = set_.a;
   snapshot.set_jerk = set_jerk_;
-  publish_for_slaves(snapshot);  // C8: the filtered actual values instead (error_propagation.cpp)
+  // C8: the filtered actual values instead (error_propagation.cpp); without slaves and a filter
+  // running it has nothing to do.
+  if (slave_count_ != 0 || actual_filter_.active) publish_for_slaves(snapshot);
 }
 
 void ServoAxis::phase_drive_command(const KinematicState& drive, ErrorCode stop,
@@ -95,18 +102,28 @@ void ServoAxis::phase_monitors(AxisSnapshot& snapshot) noexcept {
   finish_job();
   snapshot.error = channel_.error();
   snapshot.error_event = error_event_;
-  snapshot.group_reaction_due = group_reaction_due();
+  snapshot.group_reaction_due = propagation_.pending && group_reaction_due();
   const uint32_t control = channel_.ref().PlcToNc.ControlDWord;
   snapshot.controller_enabled = plc::test_bit(control, plc::kControlEnable);
   snapshot.feed_enabled_plus = plc::test_bit(control, plc::kControlFeedEnablePlus);
   snapshot.feed_enabled_minus = plc::test_bit(control, plc::kControlFeedEnableMinus);
+  // The precondition of SPEC C8 case 2 for the group of this axis alone; for the head of a larger
+  // group the kernel replaces it after the group reactions (Kernel::mark_ready_groups).
+  if (!slave_link_.coupled && !slave_link_.detached) {
+    group_ready_ = snapshot.error == ErrorCode::kNone && snapshot.controller_enabled;
+  }
 }
 
 void ServoAxis::check_enables() noexcept {
   const bool enabled = channel_.controller_enabled();
   const bool lost = enable_seen_ && !enabled;
   enable_seen_ = enabled;
-  if (update_by_hand()) return;  // C8 case 2: the group follows this master pushed by hand
+  if (slave_count_ == 0) {  // update_by_hand() without its call: no group to follow this axis
+    by_hand_ = false;
+    if (enabled) hand_velocity_ = 0.0;
+  } else if (update_by_hand()) {
+    return;  // C8 case 2: the group follows this master pushed by hand
+  }
   if (!enabled) {
     // Losing the controller enable while a command runs is an axis error (enable_loss.cpp);
     // there is no ramp to run (the drive is off), so the job ends here and the set values follow
@@ -182,6 +199,12 @@ void ServoAxis::generate_set_values(std::span<const AxisSnapshot> snapshots) noe
       set_jerk_ = 0.0;
       break;
   }
+  if (stack_.empty()) {
+    // The steady case: superimpose() would add the held ±0.0 and nothing else (the addition
+    // kept for the sign of a zero). Without the stack there is no absolute packet either.
+    set_ = KinematicState{base_.p + stack_.held(), base_.v, base_.a};
+    return;
+  }
   const BasicPath path = basic_path();
   SuperpositionStack::Basic basic;
   basic.state = base_;
@@ -228,7 +251,7 @@ SetValueSource ServoAxis::source() const noexcept {
 }
 
 void ServoAxis::control_and_drive() noexcept {
-  if (config_.kind == AxisKind::kEncoder) {
+  if (encoder_) {
     // Encoder / virtual axis: no controller, the actual values are the set values.
     const KinematicState& command = drive_command();
     drive_.follow(command.p, command.v, command.a);

@@ -97,6 +97,15 @@ class ServoAxis {
   void phase_drive(AxisSnapshot& snapshot) noexcept;     // (d)
   void phase_monitors(AxisSnapshot& snapshot) noexcept;  // (e)
   void phase_publish(uint64_t cycle_counter) noexcept;   // (f)
+  // Phases (b), (d), (e), (f) one after the other, for a kernel in which no axis reads another
+  // (no coupling, HLI stage not engaged): the same as the kernel's phase loops.
+  void run_alone(AxisSnapshot& snapshot, std::span<const AxisSnapshot> snapshots,
+                 uint64_t cycle_counter) noexcept {
+    phase_set_values(snapshot, snapshots);
+    phase_drive(snapshot);
+    phase_monitors(snapshot);
+    phase_publish(cycle_counter);
+  }
   // (e), after every axis's monitors: the group reaction (SPEC C7 INSTANTANEOUS) reaches this
   // axis with the faulty axis's code; the first error stays. A slave goes on following (its
   // head master's emergency ramp brings it down); a master stops on its emergency ramp.
@@ -107,8 +116,9 @@ class ServoAxis {
   // every axis enabled when it went, and couple_slave_to_actual_values is set: the group follows
   // its actual values (pushed by hand). Losing the controller enable is no error then.
   bool follows_by_hand() const noexcept;
-  // Kernel, after the group reactions of each cycle: `ready` = this axis heads a group in which
-  // no axis has an error and every axis has its controller enable (the precondition of case 2).
+  // Kernel, after the group reactions of a cycle with couplings: `ready` = this axis heads a
+  // group in which no axis has an error and every axis has its controller enable (the
+  // precondition of case 2). An uncoupled axis sets it for itself in phase_monitors().
   void set_group_ready(bool ready) noexcept { group_ready_ = ready; }
   // Kernel::push_by_hand: the drive of this disabled continuous axis moves at `velocity` (mm/s)
   // from the next cycle on, until the controller enable returns or another velocity is given.
@@ -314,15 +324,17 @@ class ServoAxis {
   // Reset, or the controller enable gone: the external generation is switched off at once.
   void end_external_generation() noexcept;
 
-  AxisConfig config_;
+  // What a steady cycle touches comes first, close together (docs/performance.md "Kernel
+  // cycle"); the job (with its profile), the AXIS_REF (with its mailbox), the homing, the buffer
+  // and the configuration follow.
+  // Kind kTwoSpeed: the phases run this instead of the servo path (AxisKind dispatch).
+  std::unique_ptr<TwoSpeedAxis> two_speed_;
   double cycle_time_;
   std::size_t index_;
-  AxisChannel channel_{};
-  Profile& scratch_;  // a start is planned here first, so a refusal changes nothing
-
-  MasterJob job_{};
-  HomingJob homing_{};
-  CommandBuffer buffer_{};
+  // The configuration values a steady cycle reads, copied here (config_ below stays cold).
+  bool encoder_ = false;  // config_.kind == AxisKind::kEncoder
+  double modulo_factor_ = 360.0;
+  double standstill_window_ = 0.0;
   PositionController controller_{};
   Drive drive_{};
   Monitors monitors_{};
@@ -345,13 +357,15 @@ class ServoAxis {
   const KinematicState& drive_command() const noexcept {
     return drive_command_given_ ? drive_command_ : set_;
   }
-  SuperpositionStack stack_{};
   SlaveLink slave_link_{};
   uint32_t slave_count_ = 0;  // axes coupled to this one as their master
   BasicPath slave_path_{};    // while coupled: the master's path of this cycle, transformed
   // The axis's own job's path, or slave_path_ while coupled.
   BasicPath basic_path() const noexcept;
-  double target_velocity() const noexcept { return basic_path().target_velocity; }
+  double target_velocity() const noexcept {  // basic_path().target_velocity, without the rest
+    if (slave_link_.coupled) return slave_path_.target_velocity;
+    return job_.active() ? job_.target_velocity() : 0.0;
+  }
   double set_jerk_ = 0.0;
   double previous_set_position_ = 0.0;
   double previous_measured_ = 0.0;
@@ -375,8 +389,13 @@ class ServoAxis {
   ActualValueFilter actual_filter_{};
   uint32_t errors_raised_ = 0;
 
-  // Kind kTwoSpeed: the phases run this instead of the servo path (AxisKind dispatch).
-  std::unique_ptr<TwoSpeedAxis> two_speed_;
+  SuperpositionStack stack_{};
+  MasterJob job_{};
+  AxisChannel channel_{};
+  HomingJob homing_{};
+  CommandBuffer buffer_{};
+  Profile& scratch_;  // a start is planned here first, so a refusal changes nothing
+  AxisConfig config_;
 };
 
 }  // namespace nc::detail

@@ -60,6 +60,9 @@ class SuperpositionStack {
 
   // A superposition moves the axis while the basic motion holds.
   bool moves_alone() const noexcept { return compensation_.running() || external_.taking(); }
+  // Nothing on top: superimpose() would give the basic state (p + held, held ±0.0) and change
+  // nothing else.
+  bool empty() const noexcept { return held_ == 0.0 && !moves_alone(); }
   double held() const noexcept { return held_; }
   Compensation& compensation() noexcept { return compensation_; }
   const Compensation& compensation() const noexcept { return compensation_; }

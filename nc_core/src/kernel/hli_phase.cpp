@@ -38,7 +38,7 @@ double HliPhase::command_position_request(
 }
 
 bool HliPhase::begin_cycle() noexcept {
-  if (!engaged_) {
+  if (!engaged_ && handed_out_) {
     for (const plc::hli::HLI_AX* unit : stage_.gpAx()) {
       if (unit->lr_mc_control.axis_coupling.command_w.semaphor_rw) {
         engaged_ = true;

@@ -6,7 +6,7 @@
 // q: a list in force, a stopped target braking, an offset left by a list switched off, or a
 // semaphore set by the PLC. Only then does the kernel run phase (c) (and the whole kernel as one
 // block, since the stage needs every axis's q); otherwise d = q and phase (c) costs one flag read
-// per axis and cycle (the semaphores).
+// per axis and cycle (the semaphores), nothing before the units were handed out (gpAx()).
 //
 // Safety (docs/behaviour.md "HLI axis coupling", "A target's own error"): before the stage runs,
 // a target that is in axis error or has lost its controller enable loses its list (the stage
@@ -37,7 +37,11 @@ class HliPhase {
   // Set-up: the axis with its effective configuration (id assigned); index = axes so far.
   plc::hli::HLI_AX& add_axis(const AxisConfig& effective);
 
-  std::span<plc::hli::HLI_AX* const> gpAx() const noexcept { return stage_.gpAx(); }
+  // The only way to the control units: from the first call on, begin_cycle() reads them.
+  std::span<plc::hli::HLI_AX* const> gpAx() const noexcept {
+    handed_out_ = true;
+    return stage_.gpAx();
+  }
   // D5; NaN for an unknown logical axis number. While the stage is idle its drive values are not
   // kept up to date: every axis has d = q then, its published NcToPlc.SetPos.
   double command_position_request(int ax_nr,
@@ -63,6 +67,8 @@ class HliPhase {
   std::vector<plc::ErrorCode> pending_;  // axis errors raised on the axis with this cycle's d
   std::vector<uint32_t> errors_seen_;    // ServoAxis::errors_raised() at the last phase (c)
   bool engaged_ = false;
+  // gpAx() was called: only then can a semaphore be set (nobody else reaches the units).
+  mutable bool handed_out_ = false;
 };
 
 }  // namespace nc::detail

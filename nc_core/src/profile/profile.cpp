@@ -90,13 +90,23 @@ std::size_t Profile::find_segment(double t) const noexcept {
 }
 
 KinematicState Profile::at(double t) const noexcept {
+  double jerk = 0.0;
+  return at(t, jerk);
+}
+
+KinematicState Profile::at(double t, double& jerk) const noexcept {
   if (t >= duration_) {
+    jerk = 0.0;
     if (!holds_velocity_) return final_;
     return KinematicState{final_.p + final_.v * (t - duration_), final_.v, 0.0};
   }
-  if (!(t > 0.0)) return start_;
+  if (!(t > 0.0)) {
+    jerk = jerk_at(t);  // t <= 0 or NaN: its own rules
+    return start_;
+  }
   const std::size_t i = find_segment(t);
   const Segment& seg = segments_.items[i];
+  jerk = seg.j;
   const double tau = t - seg.t0;
   if (tau <= 0.5 * seg.duration) {
     return detail::advance(KinematicState{seg.p, seg.v, seg.a}, seg.j, tau);
