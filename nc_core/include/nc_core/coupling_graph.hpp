@@ -1,5 +1,6 @@
 // Who follows whom among the axes of one kernel (SPEC C): a forest of master → slave links,
-// each slave with at most one master. The kernel owns it; it is empty until coupling lands.
+// each slave with at most one master (MC_GearIn / MC_GearInDyn make links, MC_GearOut ends
+// them). The kernel owns it.
 //
 // The kernel computes set values in order(): every master before its slaves, index order while
 // there is no coupling. The order and the groups (an axis with all axes coupled to it directly or

@@ -79,7 +79,7 @@ class Kernel {
 
   // What axis `index` published to the other axes in the last cycle. Unchecked index.
   const AxisSnapshot& snapshot(std::size_t index) const noexcept { return snapshots_[index]; }
-  // Who follows whom (empty until coupling lands).
+  // Who follows whom (the MC_GearIn / MC_GearInDyn couplings in force).
   const CouplingGraph& couplings() const noexcept { return couplings_; }
 
   // HLI axis coupling (SPEC D1, seed 002): gpAx[axis_idx], the CNC control unit of each axis,
