@@ -15,8 +15,8 @@
 //    motion's set state leads to at the axis's jerk (|v| + a² / 2J, where it started);
 //  - a cyclic slave (MC_GearInDyn, C6): SetVelo = GearRatio × its master's, and in a cycle in
 //    which the factor in force moves, |SetAcc| stays within the coupling's AccBound;
-//  - a slave that left its coupling on its own error under DELAYED propagation (C7) still shows
-//    as a slave, with GearRatio 0;
+//  - a coupled slave shows a GearRatio != 0, except one that left its coupling on its own error
+//    under DELAYED propagation (C7): it shows as a slave with GearRatio 0 until MC_GearOut;
 //  - a two-speed axis (E4): SetVelo is 0 or ± rapid_velocity / creep_velocity, SetAcc 0,
 //    |ActVelo| at most rapid_velocity (its own limits replace the servo ones);
 //  - every command number posted is answered (leaves kPosted) within 2 NC cycles, its answer
