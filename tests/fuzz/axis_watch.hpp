@@ -14,9 +14,10 @@
 //    larger homing velocity, or, for a homing that took over a motion, within the peak that
 //    motion's set state leads to at the axis's jerk (|v| + a² / 2J, where it started);
 //  - a cyclic slave (MC_GearInDyn, C6): SetVelo = GearRatio × its master's, and in a cycle in
-//    which the factor in force moves, |SetAcc| stays within the coupling's AccBound;
-//  - a slave that left its coupling on its own error under DELAYED propagation (C7) still shows
-//    as a slave, with GearRatio 0;
+//    which the factor in force moves, |SetAcc| stays within max(AccBound, |held factor × the
+//    master's SetAcc|) (the rate nearest the AccBound interval, clamped at the commanded factor);
+//  - a coupled slave shows a GearRatio != 0, except one that left its coupling on its own error
+//    under DELAYED propagation (C7): it shows as a slave with GearRatio 0 until MC_GearOut;
 //  - a two-speed axis (E4): SetVelo is 0 or ± rapid_velocity / creep_velocity, SetAcc 0,
 //    |ActVelo| at most rapid_velocity (its own limits replace the servo ones);
 //  - every command number posted is answered (leaves kPosted) within 2 NC cycles, its answer
@@ -164,10 +165,11 @@ class AxisWatch {
     }
     const bool cyclic = coupled && cyclic_ && n.CmdNo == cyclic_number_;
     const bool moved = cyclic && was_cyclic_ && n.GearRatio != last_ratio_;
+    const double held_ratio = last_ratio_;
     was_cyclic_ = cyclic;
     last_ratio_ = n.GearRatio;
     if (cyclic) {
-      if (const char* broken = check_cyclic(n, moved)) return broken;
+      if (const char* broken = check_cyclic(n, moved, held_ratio)) return broken;
     } else if (coupled) {
       if (const char* broken = check_following(n)) return broken;
     } else if (!decoupled_) {
@@ -212,8 +214,11 @@ class AxisWatch {
       return "two-speed actual velocity above rapid";
     return nullptr;
   }
-  // C6: the velocity is factor × the master's; the factor moves only where |a| <= AccBound.
-  FUZZ_CHECKER const char* check_cyclic(const plc::NCTOPLC_AXIS_REF& n, bool moved) const noexcept {
+  // C6: the velocity is factor × the master's; the factor moves only where |a| <= AccBound, or,
+  // where holding it already passes AccBound (below the stability bound, or a master beyond its
+  // own limits: documented), only so that |a| stays within the held factor × the master's.
+  FUZZ_CHECKER const char* check_cyclic(const plc::NCTOPLC_AXIS_REF& n, bool moved,
+                                        double held_ratio) const noexcept {
     if (n.GearRatio == 0.0 && !left_coupling(n)) return "a coupled slave shows no gear ratio";
     if (!plc::test_bit(n.StateDWord, plc::kStateOperational) ||
         !plc::test_bit(master_->StateDWord, plc::kStateOperational)) {
@@ -222,7 +227,8 @@ class AxisWatch {
     if (!near(n.SetVelo, n.GearRatio * master_->SetVelo)) {
       return "cyclic slave set velocity is not gear ratio x master set velocity";
     }
-    if (moved && std::fabs(n.SetAcc) > acc_bound_ * (1.0 + 1e-9) + 1e-9) {
+    const double bound = std::max(acc_bound_, std::fabs(held_ratio * master_->SetAcc));
+    if (moved && std::fabs(n.SetAcc) > bound * (1.0 + 1e-9) + 1e-9) {
       return "cyclic slave factor moved with its acceleration above AccBound";
     }
     return nullptr;

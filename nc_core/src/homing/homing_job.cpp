@@ -66,9 +66,12 @@ HomingJob::Step HomingJob::advance(const Inputs& in, double cycle_time, Profile&
     case Phase::kOffCam:
       cam_seen_ = cam_seen_ || in.cam;
       if (cam_seen_ && !in.cam) {
-        if (pulse_distance_ > 0.0) {
+        // A pulse grid finer than the position's resolution (|position / distance| >= 2^52, or
+        // not finite: a denormal distance, fuzz finding K9) puts the next pulse within rounding
+        // of the edge: the edge is the reference, as with no pulse.
+        const double n = pulse_distance_ > 0.0 ? in.raw_position / pulse_distance_ : 0.0;
+        if (pulse_distance_ > 0.0 && std::abs(n) < 0x1p52) {
           // The first pulse strictly beyond the edge in the sync direction.
-          const double n = in.raw_position / pulse_distance_;
           pulse_ =
               (sync_direction_ > 0.0 ? std::floor(n) + 1.0 : std::ceil(n) - 1.0) * pulse_distance_;
           phase_ = Phase::kSyncPulse;
