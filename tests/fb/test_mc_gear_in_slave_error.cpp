@@ -31,6 +31,20 @@ struct Plc {
     REQUIRE(slave.NcToPlc.ErrorCode == kFollowing);
     gear(master, slave);
   }
+  // The block once coupled (InGear after one NC cycle), then through the slave's error.
+  template <class Gear>
+  void check_fails_with_slave(Gear& gear) {
+    gear(master, slave);
+    rig.kernel.cycle();
+    gear(master, slave);
+    REQUIRE(gear.InGear);
+    run_until_slave_error(gear);
+    CHECK(gear.Error);
+    CHECK(gear.ErrorID == kFollowing);
+    CHECK_FALSE(gear.InGear);
+    CHECK_FALSE(gear.Busy);
+    CHECK_FALSE(gear.Active);
+  }
 };
 
 }  // namespace
@@ -40,16 +54,7 @@ TEST_CASE("MC_GearIn shows Error with the slave's ErrorID when the slave fails",
   fb::MC_GearIn gear;
   gear.Execute = true;
   gear.RatioNumerator = 1.0;
-  gear(p.master, p.slave);
-  p.rig.kernel.cycle();
-  gear(p.master, p.slave);
-  REQUIRE(gear.InGear);
-  p.run_until_slave_error(gear);
-  CHECK(gear.Error);
-  CHECK(gear.ErrorID == kFollowing);
-  CHECK_FALSE(gear.InGear);
-  CHECK_FALSE(gear.Busy);
-  CHECK_FALSE(gear.Active);
+  p.check_fails_with_slave(gear);
 }
 
 TEST_CASE("MC_GearInDyn shows Error with the slave's ErrorID when the slave fails", "[fb][gear]") {
@@ -58,14 +63,5 @@ TEST_CASE("MC_GearInDyn shows Error with the slave's ErrorID when the slave fail
   gear.Enable = true;
   gear.GearRatio = 1.0;
   gear.Acceleration = 10000.0;
-  gear(p.master, p.slave);
-  p.rig.kernel.cycle();
-  gear(p.master, p.slave);
-  REQUIRE(gear.InGear);
-  p.run_until_slave_error(gear);
-  CHECK(gear.Error);
-  CHECK(gear.ErrorID == kFollowing);
-  CHECK_FALSE(gear.InGear);
-  CHECK_FALSE(gear.Busy);
-  CHECK_FALSE(gear.Active);
+  p.check_fails_with_slave(gear);
 }
