@@ -91,6 +91,8 @@ ErrorCode ServoAxis::buffer_command(const plc::Command& command, CouplingPort& p
 }
 
 bool ServoAxis::ready_for_next() const noexcept {
+  // Behind MC_Home: when the homing is Done (it ends at rest, so a blend waits as MC_Buffered).
+  if (homing_.active()) return false;
   switch (job_.kind()) {
     case JobKind::kNone:
       return true;
