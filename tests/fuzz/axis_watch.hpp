@@ -6,7 +6,8 @@
 //    and docs/behaviour.md documents as allowed: accelerations / decelerations given to a
 //    move, MC_Halt or MC_Stop; a compensation's VK and AK± on top of the basic motion (B7); the
 //    fed external set values (B8). The widening lasts until the axis rests again. A coupled
-//    slave instead has GearRatio times its master's set velocity and acceleration (C1, C2); a
+//    slave instead has GearRatio times its master's set velocity and acceleration (C1, C2), plus
+//    what its own compensation may add (C5, the VK and AK± the program gave it); a
 //    slave decoupled in motion goes on as it would have as a slave (C4, factor x its former
 //    master's plan, then a replan from that state), so its own limits are not checked until it
 //    rests;
@@ -94,6 +95,10 @@ class AxisWatch {
     if (!usable(vk) || !usable(ak_plus) || !usable(ak_minus) || !usable(vp)) return;
     velocity_ += vk;
     acceleration_ += std::max(ak_plus, ak_minus) + vk / vp * acceleration_;
+    // On a slave (SPEC C5) the same on top of factor × its master's set values.
+    comp_velocity_ += vk;
+    comp_acceleration_ += std::max(ak_plus, ak_minus);
+    comp_share_ += vk / vp;
   }
   // A fed external setpoint packet, taken while external generation is on. The set state is the
   // packet's, and a stop or the error ramp starts from it (docs/behaviour.md): with its
@@ -242,10 +247,17 @@ class AxisWatch {
         !plc::test_bit(master_->StateDWord, plc::kStateOperational)) {
       return nullptr;
     }
-    if (!near(n.SetVelo, n.GearRatio * master_->SetVelo)) {
+    // Its own compensation (SPEC C5) may add up to VK and AK± + VK / VP of the basic
+    // acceleration (finding K10 was this checker without it: AK 3.5e-4 on a factor -0.5 slave).
+    const double basic_v = n.GearRatio * master_->SetVelo;
+    const double basic_a = n.GearRatio * master_->SetAcc;
+    if (!near(n.SetVelo, basic_v) &&
+        std::fabs(n.SetVelo - basic_v) > comp_velocity_ * (1.0 + 1e-9) + 1e-9) {
       return "slave set velocity is not gear ratio x master set velocity";
     }
-    if (!near(n.SetAcc, n.GearRatio * master_->SetAcc)) {
+    if (!near(n.SetAcc, basic_a) &&
+        std::fabs(n.SetAcc - basic_a) >
+            (comp_acceleration_ + comp_share_ * std::fabs(basic_a)) * (1.0 + 1e-9) + 1e-9) {
       return "slave set acceleration is not gear ratio x master set acceleration";
     }
     return nullptr;
@@ -264,6 +276,9 @@ class AxisWatch {
   void rest() noexcept {
     velocity_ = base_velocity_;
     acceleration_ = base_acceleration_;
+    comp_velocity_ = 0.0;
+    comp_acceleration_ = 0.0;
+    comp_share_ = 0.0;
     decoupled_ = false;
   }
 
@@ -324,6 +339,10 @@ class AxisWatch {
   double velocity_ = 0.0;
   const plc::NCTOPLC_AXIS_REF* master_ = nullptr;
   double acceleration_ = 0.0;
+  // What compensations the program started may add on a slave until it rests (check_following).
+  double comp_velocity_ = 0.0;
+  double comp_acceleration_ = 0.0;
+  double comp_share_ = 0.0;
   bool was_coupled_ = false;
   bool decoupled_ = false;  // decoupled in motion (C4): own limits unchecked until at rest
   // Homing.
