@@ -49,8 +49,7 @@ bool ServoAxis::follows_by_hand() const noexcept {
 
 bool ServoAxis::update_by_hand() noexcept {
   if (!follows_by_hand()) {
-    by_hand_ = false;
-    if (channel_.controller_enabled()) hand_velocity_ = 0.0;  // the push ends with the enable
+    end_by_hand();
     return false;
   }
   if (!by_hand_) {

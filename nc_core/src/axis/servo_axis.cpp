@@ -118,9 +118,8 @@ void ServoAxis::check_enables() noexcept {
   const bool enabled = channel_.controller_enabled();
   const bool lost = enable_seen_ && !enabled;
   enable_seen_ = enabled;
-  if (slave_count_ == 0) {  // update_by_hand() without its call: no group to follow this axis
-    by_hand_ = false;
-    if (enabled) hand_velocity_ = 0.0;
+  if (slave_count_ == 0) {  // no group to follow this axis: never case 2 (follows_by_hand())
+    end_by_hand();
   } else if (update_by_hand()) {
     return;  // C8 case 2: the group follows this master pushed by hand
   }

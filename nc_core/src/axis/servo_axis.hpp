@@ -262,6 +262,11 @@ class ServoAxis {
   // CommandAborted) and leaves it when it no longer does (the push by hand ends). True while
   // in case 2: the lost controller enable is no error.
   bool update_by_hand() noexcept;
+  // Not (or no longer) in case 2; a push by hand ends with the controller enable.
+  void end_by_hand() noexcept {
+    by_hand_ = false;
+    if (channel_.controller_enabled()) hand_velocity_ = 0.0;
+  }
 
   // --- homing/home_command.cpp (MC_Home, SPEC F; docs/behaviour.md "Homing") ---
   ErrorCode start_home(const plc::Command& command) noexcept;
