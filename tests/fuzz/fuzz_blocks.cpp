@@ -591,9 +591,14 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
       case 15:
         edit_gear_dyn(a, n_axes, in);
         break;
-      case 16:
-        p.push_by_hand(in.below(n_axes + 1), in.number());  // index n_axes: unknown
+      case 16: {
+        // Read in this order on every compiler (the order of a call's arguments is not
+        // specified: GCC read the velocity first, so its replay decoded other programs).
+        const std::size_t index = in.below(n_axes + 1);  // n_axes: an unknown axis
+        const double velocity = in.number();
+        p.push_by_hand(index, velocity);
         break;
+      }
       default: {
         const std::size_t k = 1 + in.below(64);
         for (std::size_t i = 0; i < k && p.cycles < kMaxCycles; ++i)
