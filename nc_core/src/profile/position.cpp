@@ -48,10 +48,7 @@ Profile finish(const KinematicState& start, double target, double dir, const Pie
 }  // namespace
 
 Profile plan_position(const KinematicState& start, double target, const Limits& limits) noexcept {
-  ErrorCode e = detail::check_state(start);
-  if (e == ErrorCode::kNone) e = detail::check_target(target);
-  if (e == ErrorCode::kNone) e = detail::check_limits(limits);
-  if (e == ErrorCode::kNone) e = detail::check_start_against(start, limits);
+  const ErrorCode e = detail::check_plan(start, target, limits);
   if (e != ErrorCode::kNone) return Profile::failure(e);
 
   const Bounds bounds{limits.acceleration, limits.deceleration, limits.jerk};
