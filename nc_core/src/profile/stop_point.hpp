@@ -2,8 +2,10 @@
 // function whose root plan_position finds. Same closed form as the stop's pieces
 // (velocity_change.cpp, stop_change), written once for plain numbers and once for jets (value,
 // first and second derivative), so that the root can be found with a second-order (Halley-type)
-// method. The values are computed by the same operations in both (bit for bit); only the
-// derivatives use reciprocals, since they steer the root finder and never enter a profile.
+// method; stop_point_along (below) writes the derivatives out for the common stop shapes and
+// takes the jets for the others. The values are computed by the same operations everywhere (bit
+// for bit); only the derivatives use reciprocals, since they steer the root finder and never
+// enter a profile.
 #pragma once
 
 #include <cmath>
