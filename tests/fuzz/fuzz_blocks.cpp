@@ -11,7 +11,8 @@
 // values), a two-speed axis or DELAYED error propagation (any delay, actual-value coupling), and
 // the operations MC_Home (any mode, position, cam signal), MC_GearInDyn (any factor per cycle,
 // AccBound, Enable toggled) and Kernel::push_by_hand (any axis index, any velocity).
-// Every PLC cycle calls every block of every axis once, then the NC cycle runs. Checked at every
+// Every PLC cycle calls every block of every axis that the program has used once (a block never
+// given an edge or enable is idle and skipped), then the NC cycle runs. Checked at every
 // cycle, each a crash when broken: the block output rules (block_rules.hpp) after every call, the
 // axis invariants (axis_watch.hpp: finite image, set velocity and acceleration within the limits,
 // every command answered within 2 cycles and never twice differently), and no allocation in the
@@ -93,6 +94,12 @@ struct AxisProgram {
   bool dyn_used = false;
   std::size_t gear_master = 0;  // the master input of gear_in
   std::size_t edge_master = 0;  // the master input when gear_in posted its last command
+  // The blocks the program has ever given an input edge or an enable (kCalled bits). One that
+  // never had one is idle: its Execute (or Enable) has been false since it was made, so a call
+  // starts nothing, posts nothing and leaves its outputs at their defaults (all false, ErrorID
+  // 0; fb/src/execute_block.cpp begin_call / end_call in phase kIdle, MC_SetOverride with
+  // Enable false). Such calls are skipped: they are most of a cycle's calls under the sanitizers.
+  uint32_t called = 0;
   std::array<fb::MC_MoveRelative, kBurst> burst;
   // Burst blocks [0, bursts) have had a rising edge; the others have never been executed, so a
   // call leaves them idle and is skipped (the blocks are most of the calls of a cycle).
@@ -101,6 +108,21 @@ struct AxisProgram {
   int32_t feed_direction = 0;
   bool feeding = false;
 };
+
+// kCalled bits: bit k (k < kExecuteKinds) for the Execute block of edit_execute_block's kind k,
+// then MC_SetOverride, MC_GearIn and MC_GearOut.
+constexpr uint32_t kCalledSetOverride = 1U << kExecuteKinds;
+constexpr uint32_t kCalledGearIn = kCalledSetOverride << 1U;
+constexpr uint32_t kCalledGearOut = kCalledGearIn << 1U;
+constexpr uint32_t called_kind(std::size_t kind) {
+  return 1U << kind;
+}
+
+// Calls the block (with the output rules) only once the program has ever set its input.
+template <class Block>
+void call_if_used(const AxisProgram& a, uint32_t bit, Block& block, plc::AXIS_REF& axis) noexcept {
+  if ((a.called & bit) != 0) fuzz::call_checked(block, axis);
+}
 
 nc::AxisConfig axis_config(std::size_t index, uint8_t variant) {
   nc::AxisConfig c;
@@ -196,34 +218,36 @@ void feature_config(nc::AxisConfig& c, uint8_t feature, fuzz::ByteReader& in) {
 void plc_cycle(AxisProgram& a, plc::AXIS_REF& axis, const plc::AXIS_REF* master,
                const plc::AXIS_REF* dyn_master) {
   a.power(axis);
-  fuzz::call_checked(a.reset, axis);
-  fuzz::call_checked(a.absolute, axis);
-  fuzz::call_checked(a.relative, axis);
-  fuzz::call_checked(a.modulo, axis);
-  fuzz::call_checked(a.velocity, axis);
-  fuzz::call_checked(a.halt, axis);
-  fuzz::call_checked(a.stop, axis);
-  a.set_override(axis);
-  fuzz::call_checked(a.new_pos, axis);
-  fuzz::call_checked(a.new_pos_and_velo, axis);
-  fuzz::call_checked(a.superimposed, axis);
-  fuzz::call_checked(a.abort_superposition, axis);
-  fuzz::call_checked(a.ext_enable, axis);
-  fuzz::call_checked(a.ext_disable, axis);
+  if (a.called != 0) {
+    call_if_used(a, called_kind(0), a.reset, axis);
+    call_if_used(a, called_kind(1), a.absolute, axis);
+    call_if_used(a, called_kind(2), a.relative, axis);
+    call_if_used(a, called_kind(3), a.modulo, axis);
+    call_if_used(a, called_kind(4), a.velocity, axis);
+    call_if_used(a, called_kind(5), a.halt, axis);
+    call_if_used(a, called_kind(6), a.stop, axis);
+    if ((a.called & kCalledSetOverride) != 0) a.set_override(axis);
+    call_if_used(a, called_kind(7), a.new_pos, axis);
+    call_if_used(a, called_kind(8), a.new_pos_and_velo, axis);
+    call_if_used(a, called_kind(9), a.superimposed, axis);
+    call_if_used(a, called_kind(10), a.abort_superposition, axis);
+    call_if_used(a, called_kind(11), a.ext_enable, axis);
+    call_if_used(a, called_kind(12), a.ext_disable, axis);
+  }
   for (std::size_t i = 0; i < a.bursts; ++i)
     fuzz::call_checked(a.burst[i], axis);
   if (a.feeding) {
     (void)fb::MC_ExtSetPointGenFeed(a.feed_p, a.feed_v, a.feed_a, a.feed_direction, axis);
   }
-  if (master != nullptr) {
+  if (master != nullptr && (a.called & kCalledGearIn) != 0) {
     // An edge the block takes posts a new command (one while Busy is ignored).
     const uint16_t before = a.gear_in.command_number();
     a.gear_in(*master, axis);
     if (a.gear_in.command_number() != before) a.edge_master = a.gear_master;
     if (const char* broken = fuzz::broken_output_rule(a.gear_in)) fuzz::fail(broken);
     if (a.gear_in.InGear && !a.gear_in.Busy) fuzz::fail("InGear without Busy");
-    fuzz::call_checked(a.gear_out, axis);
   }
+  if (master != nullptr) call_if_used(a, kCalledGearOut, a.gear_out, axis);
   if (dyn_master != nullptr && a.home_used) {
     a.home.bCalibrationCam = a.cam;
     fuzz::call_checked(a.home, axis);
@@ -256,6 +280,7 @@ void set_motion(Block& b, fuzz::ByteReader& in) {
 void edit_execute_block(AxisProgram& a, fuzz::AxisWatch& watch, fuzz::ByteReader& in) {
   const std::size_t kind = in.below(kExecuteKinds);
   if (fuzz::g_trace) std::fprintf(stderr, " block %zu", kind);
+  a.called |= called_kind(kind);
   switch (kind) {
     case 0:
       a.reset.Execute = !a.reset.Execute;
@@ -530,6 +555,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
         if (in.flag()) a.power.Override = in.number();
         break;
       case 5:
+        a.called |= kCalledSetOverride;
         a.set_override.Enable = in.flag();
         a.set_override.VelFactor = in.number();
         break;
@@ -581,8 +607,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
         a.gear_in.RatioDenominator = in.flag() ? in.u16() : 1;
         a.gear_master = in.below(n_axes);
         a.gear_in.Execute = !a.gear_in.Execute;
+        a.called |= kCalledGearIn;
         break;
       case 13:
+        a.called |= kCalledGearOut;
         a.gear_out.Execute = !a.gear_out.Execute;
         break;
       case 14:
