@@ -246,9 +246,10 @@ void hli_config(nc::AxisConfig& c, std::size_t index, uint8_t b, fuzz::ByteReade
   try_field(c, &nc::AxisConfig::recalc_input_position_absolute, (b & 0x80U) != 0);
 }
 
-// One PLC cycle of one axis: every block once, in a fixed order (the gear blocks in coupling
-// programs only, `master` being gear_in's master input; MC_Home and MC_GearInDyn in feature
-// programs only, `dyn_master` being gear_dyn's master input).
+// One PLC cycle of one axis: every block the program has used once, in a fixed order (the gear
+// blocks in coupling programs only, `master` being gear_in's master input; MC_Home and
+// MC_GearInDyn in feature programs only, `dyn_master` being gear_dyn's master input;
+// HLI_AxisCoupling in HLI programs only, on `hli_unit`).
 void plc_cycle(AxisProgram& a, plc::AXIS_REF& axis, const plc::AXIS_REF* master,
                const plc::AXIS_REF* dyn_master, plc::hli::HLI_AX* hli_unit) {
   a.power(axis);
