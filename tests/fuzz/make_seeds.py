@@ -291,6 +291,12 @@ BLOCKS = {
         axes=((0, bytes([0]), 0), (1, homing_feature(homed=True), 0)),
         ops=[run(0, 3), hli_apply(1, [hli_entry(0, 4, 7, 2)]),
              absolute(0, 600, 2000)] + [run(0, 64)] * 8 + [execute(1, 0), run(0, 3)]),
+    "hli_source_and_target_errors": hli_program(
+        axes=((0, bytes([0]), 0), (0x04, bytes([0]), 0), (0, bytes([0]), 0)),
+        ops=[run(0, 3), hli_apply(2, [hli_entry(0, 2), hli_entry(1, 4, 3, 2)]),
+             velocity(0, 300), absolute(1, 500, 2000), run(0, 64), run(0, 64), fault(0, 0),
+             run(0, 64), execute(0, 0), execute(1, 0), run(0, 3), velocity(0, 300), run(0, 30),
+             fault(2, 2), run(0, 64), run(0, 64)]),
     "bad_inputs": blocks_program(ops=[run(0, 3), absolute(0, "nan", 1000), run(0, 3),
                                      absolute(0, 100, "inf"), run(0, 3), absolute(0, 100, -5),
                                      run(0, 3), absolute(0, "huge", 1000), run(0, 3),
