@@ -20,6 +20,12 @@
 //    both plus what its own compensation may add, as on a linear slave;
 //  - a coupled slave shows a GearRatio != 0, except one that left its coupling on its own error
 //    under DELAYED propagation (C7): it shows as a slave with GearRatio 0 until MC_GearOut;
+//  - an HLI target (docs/behaviour.md "HLI axis coupling", D3: its own dynamic limits are not
+//    monitored): while a list is in force, |SetVelo| and |SetAcc| stay within the list's
+//    Σ |K| × each source's program limits (what the PLC passes to hli()); once the list is off
+//    (switched off, or 70200 / 70195 / an error braking the drive from at most that velocity at
+//    the emergency deceleration), within the larger of its own limits and that bound, until it
+//    rests;
 //  - a two-speed axis (E4): SetVelo is 0 or ± rapid_velocity / creep_velocity, SetAcc 0,
 //    |ActVelo| at most rapid_velocity (its own limits replace the servo ones);
 //  - every command number posted is answered (leaves kPosted) within 2 NC cycles, its answer
@@ -129,6 +135,17 @@ class AxisWatch {
     acc_bound_ = acc_bound;
   }
 
+  // HLI programs, set before every check(): `target` while the axis has an HLI list in force;
+  // `velocity` and `acceleration` bound its drive's set values by the lists of this cycle and the
+  // last (Σ |K| × the sources' program limits), +inf where the PLC cannot bound them (a gear
+  // slave among the axes). The bound stays until the axis rests (a drive braking after its list
+  // went off starts from at most that velocity).
+  void hli(bool target, double velocity, double acceleration) noexcept {
+    hli_target_ = target;
+    hli_velocity_ = std::max(hli_velocity_, velocity);
+    hli_acceleration_ = std::max(hli_acceleration_, acceleration);
+  }
+
   // --- After the PLC's calls of one cycle: the commands it posted (kernel drained the rest).
   FUZZ_CHECKER void posted(const plc::AXIS_REF& axis) noexcept {
     const std::size_t now = axis.Mailbox.pending();
@@ -153,8 +170,10 @@ class AxisWatch {
       return check_answers(axis.Mailbox);
     }
     const bool coupled = plc::test_bit(n.StateDWord, plc::kStateCoupled);
-    if (was_coupled_ && !coupled) decoupled_ = true;  // rest() ends it at once when at rest
+    // rest() ends it at once when at rest; an HLI target's drive keeps the bound of hli().
+    if (was_coupled_ && !coupled && !was_hli_target_) decoupled_ = true;
     was_coupled_ = coupled;
+    was_hli_target_ = hli_target_;
     left_ = coupled && (left_ || plc::test_bit(n.StateDWord, plc::kStateErrorPropagationDelayed));
     const bool homing = plc::test_bit(n.StateDWord, plc::kStateHomingBusy);
     if (homing && !homing_) {
@@ -174,15 +193,23 @@ class AxisWatch {
     const double held_ratio = last_ratio_;
     was_cyclic_ = cyclic;
     last_ratio_ = n.GearRatio;
-    if (cyclic) {
+    if (hli_target_) {
+      if (std::fabs(n.SetVelo) > hli_velocity_ * (1.0 + 1e-9) + 1e-9) {
+        return "HLI target set velocity above sum |K| x its sources' limits";
+      }
+      if (std::fabs(n.SetAcc) > hli_acceleration_ * (1.0 + 1e-6) + 1e-6) {
+        return "HLI target set acceleration above sum |K| x its sources' limits";
+      }
+    } else if (cyclic) {
       if (const char* broken = check_cyclic(n, moved, held_ratio)) return broken;
     } else if (coupled) {
       if (const char* broken = check_following(n)) return broken;
     } else if (!decoupled_) {
-      if (std::fabs(n.SetVelo) > velocity_ * (1.0 + 1e-9) + 1e-9) {
+      // hli_velocity_ / hli_acceleration_ are 0 unless the axis was an HLI target since it rested.
+      if (std::fabs(n.SetVelo) > std::max(velocity_, hli_velocity_) * (1.0 + 1e-9) + 1e-9) {
         return "set velocity above limit";
       }
-      if (std::fabs(n.SetAcc) > acceleration_ * (1.0 + 1e-6) + 1e-6) {
+      if (std::fabs(n.SetAcc) > std::max(acceleration_, hli_acceleration_) * (1.0 + 1e-6) + 1e-6) {
         return "set acceleration above limit";
       }
     }
@@ -292,6 +319,8 @@ class AxisWatch {
     comp_acceleration_ = 0.0;
     comp_share_ = 0.0;
     decoupled_ = false;
+    hli_velocity_ = 0.0;
+    hli_acceleration_ = 0.0;
   }
 
   static int rank(plc::CommandState s) noexcept {
@@ -372,6 +401,11 @@ class AxisWatch {
   double acc_bound_ = 0.0;
   double last_ratio_ = 0.0;
   bool left_ = false;  // a slave that left its coupling (left_coupling())
+  // HLI target (hli()).
+  bool hli_target_ = false;
+  bool was_hli_target_ = false;
+  double hli_velocity_ = 0.0;
+  double hli_acceleration_ = 0.0;
   // Two-speed axis.
   bool two_speed_;
   double rapid_;

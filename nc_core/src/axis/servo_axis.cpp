@@ -298,6 +298,10 @@ void ServoAxis::run_monitors() noexcept {
 }
 
 void ServoAxis::finish_job() noexcept {
+  // A job answers Done only while it is the command the axis executes and still runs: a job
+  // without a number of its own (a slave decoupled in motion goes on with its master's plan)
+  // must not answer CmdNo, which may be a command already answered (fuzz finding K12).
+  const bool own = channel_.runs(job_.number());
   if (homing_.finished()) {
     channel_.answer_current(CommandState::kDone);
     homing_.clear();
@@ -310,7 +314,7 @@ void ServoAxis::finish_job() noexcept {
       // Done = set-value generation ended and the target window reached (or switched off). A
       // pass (blending) is done when the waiting command takes over (command_buffer.cpp).
       if (job_.generation_ended() && !job_.passing() && monitors_.in_target_position()) {
-        channel_.answer_current(CommandState::kDone);
+        if (own) channel_.answer_current(CommandState::kDone);
         job_.clear();
       }
       break;
@@ -322,7 +326,7 @@ void ServoAxis::finish_job() noexcept {
     case JobKind::kHalt:
     case JobKind::kStop:
       if (job_.generation_ended()) {
-        channel_.answer_current(CommandState::kDone);
+        if (own) channel_.answer_current(CommandState::kDone);
         job_.clear();
       }
       break;
