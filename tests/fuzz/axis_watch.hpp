@@ -17,6 +17,7 @@
 //  - a cyclic slave (MC_GearInDyn, C6): SetVelo = GearRatio × its master's, and in a cycle in
 //    which the factor in force moves, |SetAcc| stays within max(AccBound, |held factor × the
 //    master's SetAcc|) (the rate nearest the AccBound interval, clamped at the commanded factor);
+//    both plus what its own compensation may add, as on a linear slave;
 //  - a coupled slave shows a GearRatio != 0, except one that left its coupling on its own error
 //    under DELAYED propagation (C7): it shows as a slave with GearRatio 0 until MC_GearOut;
 //  - an HLI target (docs/behaviour.md "HLI axis coupling", D3: its own dynamic limits are not
@@ -256,14 +257,28 @@ class AxisWatch {
         !plc::test_bit(master_->StateDWord, plc::kStateOperational)) {
       return nullptr;
     }
-    if (!near(n.SetVelo, n.GearRatio * master_->SetVelo)) {
+    // Its own compensation adds on top as on a linear slave (C5; finding K20 was this rule
+    // without it: a superimposed move started on a cyclic slave in motion).
+    const double basic_v = n.GearRatio * master_->SetVelo;
+    if (beyond_compensation(n.SetVelo, basic_v, comp_velocity_)) {
       return "cyclic slave set velocity is not gear ratio x master set velocity";
     }
     const double bound = std::max(acc_bound_, std::fabs(held_ratio * master_->SetAcc));
-    if (moved && std::fabs(n.SetAcc) > bound * (1.0 + 1e-9) + 1e-9) {
+    if (moved &&
+        std::fabs(n.SetAcc) > (bound + compensation_acceleration(bound)) * (1.0 + 1e-9) + 1e-9) {
       return "cyclic slave factor moved with its acceleration above AccBound";
     }
     return nullptr;
+  }
+  // `value` is further from `basic` than the rounding and `allowance` (what the slave's own
+  // compensations may add) together.
+  static bool beyond_compensation(double value, double basic, double allowance) noexcept {
+    return !near(value, basic) && std::fabs(value - basic) > allowance * (1.0 + 1e-9) + 1e-9;
+  }
+  // What the slave's own compensations may add to a basic acceleration of size `basic`: AK± and
+  // VK / VP of it (SPEC C5, B7).
+  double compensation_acceleration(double basic) const noexcept {
+    return comp_acceleration_ + comp_share_ * std::fabs(basic);
   }
   const char* check_following(const plc::NCTOPLC_AXIS_REF& n) const noexcept {
     if (n.GearRatio == 0.0 && !left_coupling(n)) return "a coupled slave shows no gear ratio";
@@ -278,13 +293,10 @@ class AxisWatch {
     // acceleration (finding K10 was this checker without it: AK 3.5e-4 on a factor -0.5 slave).
     const double basic_v = n.GearRatio * master_->SetVelo;
     const double basic_a = n.GearRatio * master_->SetAcc;
-    if (!near(n.SetVelo, basic_v) &&
-        std::fabs(n.SetVelo - basic_v) > comp_velocity_ * (1.0 + 1e-9) + 1e-9) {
+    if (beyond_compensation(n.SetVelo, basic_v, comp_velocity_)) {
       return "slave set velocity is not gear ratio x master set velocity";
     }
-    if (!near(n.SetAcc, basic_a) &&
-        std::fabs(n.SetAcc - basic_a) >
-            (comp_acceleration_ + comp_share_ * std::fabs(basic_a)) * (1.0 + 1e-9) + 1e-9) {
+    if (beyond_compensation(n.SetAcc, basic_a, compensation_acceleration(basic_a))) {
       return "slave set acceleration is not gear ratio x master set acceleration";
     }
     return nullptr;
@@ -368,7 +380,8 @@ class AxisWatch {
   double velocity_ = 0.0;
   const plc::NCTOPLC_AXIS_REF* master_ = nullptr;
   double acceleration_ = 0.0;
-  // What compensations the program started may add on a slave until it rests (check_following).
+  // What compensations the program started may add on a slave until it rests (check_following,
+  // check_cyclic).
   double comp_velocity_ = 0.0;
   double comp_acceleration_ = 0.0;
   double comp_share_ = 0.0;

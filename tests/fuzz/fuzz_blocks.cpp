@@ -442,7 +442,10 @@ int32_t hli_axis_number(const std::array<int, kMaxAxes>& ids, std::size_t n_axes
   const uint8_t b = in.byte();
   if (b < 200) return ids[b % n_axes];
   if (b < 240) return static_cast<int32_t>(b) - 220;
-  return static_cast<int32_t>((static_cast<uint32_t>(in.u16()) << 16U) | in.u16());
+  // Two statements: the operands of | are read in no specified order (see op 16).
+  const uint32_t high = in.u16();
+  const uint32_t low = in.u16();
+  return static_cast<int32_t>((high << 16U) | low);
 }
 
 // HLI programs: one list entry as a PLC may write it: any source, mode (mostly 0 … 4), fraction.
@@ -820,9 +823,14 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
       case 15:
         edit_gear_dyn(a, n_axes, in);
         break;
-      case 16:
-        p.push_by_hand(in.below(n_axes + 1), in.number());  // index n_axes: unknown
+      case 16: {
+        // Read in this order on every compiler (the order of a call's arguments is not
+        // specified: GCC read the velocity first, so its replay decoded other programs).
+        const std::size_t index = in.below(n_axes + 1);  // n_axes: an unknown axis
+        const double velocity = in.number();
+        p.push_by_hand(index, velocity);
         break;
+      }
       case 17:
       case 18:
         if (hli) {
