@@ -13,7 +13,8 @@
 //    rests;
 //  - a homing axis (docs/behaviour.md "Homing"): while HomingBusy, |SetVelo| stays within its
 //    larger homing velocity, or, for a homing that took over a motion, within the peak that
-//    motion's set state leads to at the axis's jerk (|v| + a² / 2J, where it started);
+//    motion's set state leads to at the axis's jerk (|v| + a² / 2J, where it started); not on
+//    an HLI target, whose image shows its drive (bounded by hli() instead);
 //  - a cyclic slave (MC_GearInDyn, C6): SetVelo = GearRatio × its master's, and in a cycle in
 //    which the factor in force moves, |SetAcc| stays within max(AccBound, |held factor × the
 //    master's SetAcc|) (the rate nearest the AccBound interval, clamped at the commanded factor);
@@ -39,6 +40,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 
 #include "fail.hpp"
 #include "nc_core/axis_config.hpp"
@@ -176,16 +178,22 @@ class AxisWatch {
     was_hli_target_ = hli_target_;
     left_ = coupled && (left_ || plc::test_bit(n.StateDWord, plc::kStateErrorPropagationDelayed));
     const bool homing = plc::test_bit(n.StateDWord, plc::kStateHomingBusy);
+    // An HLI target's image shows its drive, not the homing's program motion (docs/behaviour.md
+    // "HLI axis coupling": SetVelo shows d); since it last rested its drive values are bounded
+    // by hli() instead (finding K13 was this rule without it).
+    const bool hli_drive = hli_target_ || hli_velocity_ > 0.0;
     if (homing && !homing_) {
       // A homing started from the last cycle's set state: it may first bring that state's
-      // acceleration back at J (the aborted motion's larger J brings it back sooner).
-      homing_bound_ =
-          std::max(homing_velocity_, std::fabs(last_v_) + last_a_ * last_a_ / (2.0 * jerk_));
+      // acceleration back at J (the aborted motion's larger J brings it back sooner). Unknown
+      // when that state was an HLI drive's.
+      homing_bound_ = hli_drive ? std::numeric_limits<double>::infinity()
+                                : std::max(homing_velocity_,
+                                           std::fabs(last_v_) + last_a_ * last_a_ / (2.0 * jerk_));
     }
     homing_ = homing;
     last_v_ = n.SetVelo;
     last_a_ = n.SetAcc;
-    if (homing && std::fabs(n.SetVelo) > homing_bound_ * (1.0 + 1e-9) + 1e-9) {
+    if (homing && !hli_drive && std::fabs(n.SetVelo) > homing_bound_ * (1.0 + 1e-9) + 1e-9) {
       return "homing set velocity above its homing velocity";
     }
     const bool cyclic = coupled && cyclic_ && n.CmdNo == cyclic_number_;
