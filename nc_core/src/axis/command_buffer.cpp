@@ -161,12 +161,6 @@ void ServoAxis::take_next(CouplingPort& port) noexcept {
   }
 }
 
-void ServoAxis::drop_buffer(plc::CommandState state, uint32_t code) noexcept {
-  if (!buffer_.waiting) return;
-  buffer_.waiting = false;
-  channel_.answer(buffer_.command.number, state, code);
-}
-
 void ServoAxis::stop_pass() noexcept {
   scratch_ = plan_stop(set_, job_.limits().deceleration, job_.limits().jerk);
   if (!scratch_.ok()) return;

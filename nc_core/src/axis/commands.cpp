@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "axis/servo_axis.hpp"
+#include "axis/slave_coupling.hpp"
 #include "profile/validate.hpp"
 
 namespace nc::detail {
@@ -42,7 +43,8 @@ void ServoAxis::handle(const plc::Command& command, CouplingPort& port) noexcept
   ErrorCode code = ErrorCode::kNone;
   // An HLI target's program feeds its drive only through its list (SPEC D3): external setpoints
   // are refused there as on a coupled slave.
-  if (((slave_link_.coupled || slave_link_.detached) && refused_while_coupled(command.type)) ||
+  if (((slave_link_.coupled || slave_link_.detached) &&
+       SlaveCoupling::refused_while_coupled(command.type)) ||
       (hli_target() && command.type == CommandType::kExtSetPointGenEnable)) {
     channel_.answer(command.number, CommandState::kError,
                     plc::to_id(ErrorCode::kFunctionNotAllowed));
@@ -94,13 +96,13 @@ ErrorCode ServoAxis::handle_now(const plc::Command& command, CouplingPort& port)
       code = disable_external(command);
       break;
     case CommandType::kGearIn:
-      code = gear_in(command, port);
+      code = SlaveCoupling(*this).gear_in(command, port);
       break;
     case CommandType::kGearInDyn:
-      code = gear_in_dyn(command, port);  // cyclic_slave.cpp
+      code = SlaveCoupling(*this).gear_in_dyn(command, port);
       break;
     case CommandType::kGearOut:
-      code = gear_out(command, port);
+      code = SlaveCoupling(*this).gear_out(command, port);
       break;
     case CommandType::kHome:
       code = start_home(command);
@@ -157,10 +159,6 @@ ErrorCode ServoAxis::check_start(const plc::Command& command, bool has_position,
   if (!known_buffer_mode(command.buffer_mode)) return ErrorCode::kBufferModeNotSupported;
   if (has_position && !std::isfinite(command.position)) return ErrorCode::kPositionNotFinite;
   return check_dynamics(command, limits);
-}
-
-double ServoAxis::current_direction() const noexcept {
-  return set_.v > 0.0 ? 1.0 : (set_.v < 0.0 ? -1.0 : 0.0);
 }
 
 ErrorCode ServoAxis::start_position(const plc::Command& command) noexcept {
@@ -270,31 +268,6 @@ ErrorCode ServoAxis::start_halt_or_stop(const plc::Command& command) noexcept {
   if (stop) locked_ = true;
   has_been_stopped_ = true;
   return ErrorCode::kNone;
-}
-
-void ServoAxis::accept(JobKind kind, uint16_t number, const Profile& profile, double target,
-                       double target_velocity, const Limits& limits) noexcept {
-  // A running homing is replaced as a job would be (MC_Stop aborts it; Homed stays as it is).
-  const uint16_t running =
-      job_.active() ? job_.number() : (homing_.active() ? homing_.number() : 0);
-  homing_.clear();
-  // A new job in place of the running one: a command waiting behind that one is dropped (when
-  // the waiting command itself starts here, the buffer is already empty).
-  drop_buffer(CommandState::kAborted);
-  job_.start(kind, number, profile, target, target_velocity, limits);
-  if (kind == JobKind::kHalt || kind == JobKind::kStop) {
-    stack_.on_stop();
-  } else {
-    fold_superpositions(CommandState::kAborted);
-  }
-  channel_.take_over(number, running);
-  if (kind != JobKind::kVelocity) target_ = target;
-  monitors_.reset_windows();
-  if (kind == JobKind::kPosition || kind == JobKind::kVelocity) {
-    has_been_stopped_ = false;
-    // The override's warning stays while PlcToNc.Override is not taken (read_override()).
-    channel_.clear_warnings_except(Warning::kOverrideNotAllowed);
-  }
 }
 
 }  // namespace nc::detail

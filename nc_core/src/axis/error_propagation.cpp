@@ -29,15 +29,6 @@ bool ServoAxis::group_reaction_due() noexcept {
   return propagation_.step(error_event_);
 }
 
-ErrorCode ServoAxis::release_detached(const plc::Command& command, CouplingPort& port) noexcept {
-  port.graph.decouple(index_);
-  --port.axes[slave_link_.master]->slave_count_;
-  slave_link_.detached = false;
-  if (channel_.runs(slave_link_.command)) channel_.answer_current(CommandState::kDone);
-  channel_.answer(command.number, CommandState::kDone);
-  return ErrorCode::kNone;
-}
-
 bool ServoAxis::follows_by_hand() const noexcept {
   // Only the head of a group: a master that is no slave (nor a slave that left on an error).
   // (No slaves first: that is the steady cycle's answer.)
@@ -59,7 +50,7 @@ bool ServoAxis::update_by_hand() noexcept {
       channel_.answer_current(CommandState::kAborted);
     }
     job_.clear();
-    drop_buffer(CommandState::kAborted);
+    buffer_.drop(channel_, CommandState::kAborted);
   }
   return true;
 }

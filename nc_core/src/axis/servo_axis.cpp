@@ -3,6 +3,8 @@
 // (SPEC A3, A4, A6).
 #include "axis/servo_axis.hpp"
 
+#include "axis/slave_coupling.hpp"
+
 #include <cmath>
 
 namespace nc::detail {
@@ -11,7 +13,7 @@ using plc::CommandState;
 
 ServoAxis::ServoAxis(const AxisConfig& config, double cycle_time, std::size_t index,
                      Profile& scratch)
-    : cycle_time_(cycle_time), index_(index), scratch_(scratch), config_(config) {
+    : AxisCore(config, cycle_time, index, scratch) {
   encoder_ = config_.kind == AxisKind::kEncoder;
   modulo_factor_ = config_.modulo_factor;
   standstill_window_ = config_.standstill_window;
@@ -179,7 +181,7 @@ void ServoAxis::generate_set_values(std::span<const AxisSnapshot> snapshots) noe
     }
     case SetValueSource::kSlaveLink: {
       const AxisSnapshot& master = snapshots[slave_link_.master];
-      if (slave_link_.cyclic) step_cyclic_factor(master);  // cyclic_slave.cpp
+      if (slave_link_.cyclic) SlaveCoupling(*this).step_cyclic_factor(master);
       base_ = slave_link_.sample(master, set_.p);
       set_jerk_ = slave_link_.factor * master.set_jerk;
       break;
@@ -222,31 +224,6 @@ void ServoAxis::generate_set_values(std::span<const AxisSnapshot> snapshots) noe
   if (not_finite || r.not_finite) raise_error(ErrorCode::kParameterNotFinite);
   // A finite packet out of range (external_setpoint.hpp) is not taken either: 0x4359.
   if (too_large || r.too_large) raise_error(ErrorCode::kSetVelocityNotAllowed);
-}
-
-BasicPath ServoAxis::basic_path() const noexcept {
-  if (slave_link_.coupled) return slave_path_;
-  const JobKind kind = job_.kind();
-  BasicPath path;
-  path.running = job_.active() && !job_.generation_ended();
-  path.stopping =
-      kind == JobKind::kHalt || kind == JobKind::kStop || kind == JobKind::kEmergencyStop;
-  path.positioning = kind == JobKind::kPosition;
-  path.has_target = job_.active() && kind != JobKind::kVelocity;
-  path.target = job_.target();
-  path.target_velocity = job_.active() ? job_.target_velocity() : 0.0;
-  return path;
-}
-
-SetValueSource ServoAxis::source() const noexcept {
-  if (slave_link_.coupled) return SetValueSource::kSlaveLink;  // a coupled slave has no job
-  if (homing_.active()) return SetValueSource::kHomingJob;
-  if (job_.active()) return SetValueSource::kPtpJob;
-  const ExternalSetpoint& external = stack_.external();
-  if (external.taking() && external.type() == ExternalSetpoint::Type::kAbsolute) {
-    return SetValueSource::kExternalAbsolute;
-  }
-  return SetValueSource::kHold;
 }
 
 void ServoAxis::control_and_drive() noexcept {
@@ -353,7 +330,8 @@ void ServoAxis::raise_error(ErrorCode code, bool own) noexcept {
   if (channel_.runs(slave_link_.command)) {
     channel_.answer_current(CommandState::kError, plc::to_id(code));
   }
-  drop_buffer(CommandState::kError, plc::to_id(code));  // a waiting command fails with the axis
+  buffer_.drop(channel_, CommandState::kError,
+               plc::to_id(code));  // a waiting command fails with the axis
   // The compensation fails with the axis; external generation is switched off (seed 000 §2.6).
   fold_superpositions(CommandState::kError, code);
   if (own) begin_error_propagation();  // C7: DELAYED, a slave leaves its master here

@@ -14,42 +14,14 @@
 #include <memory>
 #include <span>
 
-#include "axis/axis_channel.hpp"
-#include "axis/command_buffer.hpp"
-#include "axis/compensation.hpp"
-#include "axis/drive.hpp"
-#include "axis/error_propagation.hpp"
-#include "axis/external_setpoint.hpp"
-#include "axis/master_job.hpp"
-#include "axis/monitors.hpp"
-#include "axis/position_controller.hpp"
-#include "axis/set_value_source.hpp"
-#include "axis/slave_link.hpp"
-#include "axis/superposition_stack.hpp"
-#include "homing/homing_job.hpp"
-#include "nc_core/axis_config.hpp"
+#include "axis/axis_core.hpp"
 #include "nc_core/axis_snapshot.hpp"
 #include "nc_core/coupling_graph.hpp"
-#include "nc_core/profile.hpp"
 #include "plc_interface/axis_ref.hpp"
-#include "plc_interface/two_speed.hpp"
-#include "two_speed/two_speed_axis.hpp"
 
 namespace nc::detail {
 
 class ServoAxis;
-
-// The basic motion an axis's superpositions ride on (seed 000 §2.5, §3.2.4): the axis's own job,
-// or, for a coupled slave, its master's path as the master's snapshot shows it (a slave's
-// compensation ends with its master's path, and its remaining length is to its TargetPos).
-struct BasicPath {
-  bool running = false;
-  bool stopping = false;
-  bool positioning = false;
-  bool has_target = false;
-  double target = 0.0;
-  double target_velocity = 0.0;
-};
 
 // What the commands phase of one axis may reach of the others (MC_GearIn / MC_GearOut): the
 // kernel's axes by index and its coupling graph. The kernel builds it for each cycle.
@@ -58,11 +30,13 @@ struct CouplingPort {
   CouplingGraph& graph;
 };
 
-class ServoAxis {
+class ServoAxis : private AxisCore {
  public:
   // `scratch`: the kernel's planning profile, shared by all its axes (one plans at a time).
   ServoAxis(const AxisConfig& config, double cycle_time, std::size_t index, Profile& scratch);
 
+  // The state the feature classes work on (axis_core.hpp); the coupling reaches other axes' too.
+  AxisCore& core() noexcept { return *this; }
   plc::AXIS_REF& ref() noexcept { return channel_.ref(); }
   const plc::AXIS_REF& ref() const noexcept { return channel_.ref(); }
   const AxisConfig& config() const noexcept { return config_; }
@@ -144,11 +118,6 @@ class ServoAxis {
   // `has_position`), then the dynamics into `limits`.
   ErrorCode check_start(const plc::Command& command, bool has_position,
                         Limits& limits) const noexcept;
-  // +1 / -1 while the set velocity has that sign, 0 at standstill (MC_Current_Direction).
-  double current_direction() const noexcept;
-  // The new job replaces the running one: the replaced command is answered kAborted.
-  void accept(JobKind kind, uint16_t number, const Profile& profile, double target,
-              double target_velocity, const Limits& limits) noexcept;
 
   // --- servo_axis.cpp ---
   void check_enables() noexcept;
@@ -159,13 +128,6 @@ class ServoAxis {
   bool enable_loss_is_error(bool lost) const noexcept;
   // Step b: the basic source's set values, then the superposition stack on top.
   void generate_set_values(std::span<const AxisSnapshot> snapshots) noexcept;
-  // The one basic source of this cycle (set_value_source.hpp).
-  SetValueSource source() const noexcept;
-  // The motion a new job, a stop or the error ramp takes over (its limits, K4, K5, K8): the
-  // running homing's, else the job's.
-  const MasterJob& running_motion() const noexcept {
-    return homing_.active() ? homing_.motion() : job_;
-  }
   void control_and_drive() noexcept;
   void run_monitors() noexcept;
   void finish_job() noexcept;
@@ -212,38 +174,6 @@ class ServoAxis {
   // superpositions on top.
   void install_table(double target, bool final, double level) noexcept;
 
-  // --- coupling.cpp (C1, C3, C4; seed 000 §3.2.2-3.2.3) ---
-  ErrorCode gear_in(const plc::Command& command, CouplingPort& port) noexcept;
-  // The checks shared by MC_GearIn and MC_GearInDyn, in the order of docs/behaviour.md "Slave
-  // axes": the factor (finite, not 0, |factor| <= 1e6); the slave's kind and the master index;
-  // for a new coupling: loop, error, lock, enable, both at rest.
-  static ErrorCode check_gear_ratio(double ratio) noexcept;
-  ErrorCode check_gear_master(const plc::Command& command, CouplingPort& port) const noexcept;
-  ErrorCode check_new_coupling(uint32_t master_index, CouplingPort& port) const noexcept;
-  // A checked new coupling: graph, counts, slave link (linear, factor command.ratio), answered
-  // kActive. False only when the graph refuses (a loop; checked before).
-  bool couple_new(const plc::Command& command, uint32_t master_index, CouplingPort& port) noexcept;
-  // --- cyclic_slave.cpp (C6; seed 000 §3.3; MC_GearInDyn) ---
-  ErrorCode gear_in_dyn(const plc::Command& command, CouplingPort& port) noexcept;
-  // The largest acceleration the axis's set values can have (mm/s²): max(A+, A-) of a master,
-  // through its cascade for a slave (|factor| × its master's; a cyclic slave at least AccBound).
-  double max_acceleration(const CouplingPort& port) const noexcept;
-  // Phase b of a cyclic slave, before its sample: PlcToNc.GearRatio1 read (not taken when 0,
-  // NaN, inf or above 1e6: warning 0x4F81) and the factor in force moved towards it within
-  // AccBound (the smoothing law of docs/behaviour.md "Cyclic slave").
-  void step_cyclic_factor(const AxisSnapshot& master) noexcept;
-  ErrorCode gear_out(const plc::Command& command, CouplingPort& port) noexcept;
-  // Online decoupling: the levels from the head of this slave's cascade down to it, and the
-  // head. False (0x424D) when the head runs no PTP job or the cascade is too deep.
-  bool decoupling_chain(CouplingPort& port, DecouplingChain& chain,
-                        const ServoAxis*& head) const noexcept;
-  // At rest for a coupling: no job, set velocity and acceleration 0, no compensation running,
-  // no external generation enabled (seed 000 §3.2.2 "both axes are stationary").
-  bool at_rest_for_coupling() const noexcept;
-  // A coupled slave refuses this command (0x424E): starts, stops, new positions and external
-  // setpoint generation (compensation is allowed: C5).
-  static bool refused_while_coupled(plc::CommandType type) noexcept;
-
   // --- error_propagation.cpp ---
   // From raise_error() for the axis's own error: starts the countdown to the group reaction
   // (0 cycles unless DELAYED in a group); a DELAYED slave leaves its master's coupling at once
@@ -251,8 +181,6 @@ class ServoAxis {
   void begin_error_propagation() noexcept;
   // The monitor phase: the group reaction of this axis's error is due in this cycle.
   bool group_reaction_due() noexcept;
-  // MC_GearOut of a slave that left its master on its own error: the link leaves the graph.
-  ErrorCode release_detached(const plc::Command& command, CouplingPort& port) noexcept;
   // C8: the slaves of this axis follow its filtered actual values in this cycle.
   bool drives_slaves_by_actual() const noexcept;
   // The set values phase: the snapshot's set values for the slaves, from the filtered actual
@@ -297,8 +225,6 @@ class ServoAxis {
   // The running command ends (Done, or CommandAborted for a velocity job) and the waiting one
   // starts from the set state (relative and modulo targets counted from the running target).
   void take_next(CouplingPort& port) noexcept;
-  // The waiting command, if any, is answered `state` (an aborting command, a stop, an error).
-  void drop_buffer(plc::CommandState state, uint32_t code = 0) noexcept;
   // With a blending command waiting behind a running positioning: its table replanned from the
   // basic state to pass the target at the blend velocity the path allows (none on a reversal).
   // `level`: the path velocity the running table has (override applied).
@@ -321,86 +247,6 @@ class ServoAxis {
   ErrorCode stop_compensation(const plc::Command& command) noexcept;
   ErrorCode enable_external(const plc::Command& command) noexcept;
   ErrorCode disable_external(const plc::Command& command) noexcept;
-  // The set state without the running compensation and the external offset: where a replan of
-  // the basic motion starts when the superpositions are to go on.
-  KinematicState basic_state() const noexcept;
-  // A job planned from set_ starts: SuperpositionStack::fold(), and the basic motion is set_.
-  void fold_superpositions(plc::CommandState state, ErrorCode code = ErrorCode::kNone) noexcept;
-  // Reset, or the controller enable gone: the external generation is switched off at once.
-  void end_external_generation() noexcept;
-
-  // What a steady cycle touches comes first, close together (docs/performance.md "Kernel
-  // cycle"); the job (with its profile), the AXIS_REF (with its mailbox), the homing, the buffer
-  // and the configuration follow.
-  // Kind kTwoSpeed: the phases run this instead of the servo path (AxisKind dispatch).
-  std::unique_ptr<TwoSpeedAxis> two_speed_;
-  double cycle_time_;
-  std::size_t index_;
-  // The configuration values a steady cycle reads, copied here (config_ below stays cold).
-  bool encoder_ = false;  // config_.kind == AxisKind::kEncoder
-  double modulo_factor_ = 360.0;
-  double standstill_window_ = 0.0;
-  PositionController controller_{};
-  Drive drive_{};
-  Monitors monitors_{};
-
-  KinematicState set_{};   // set values of this cycle (basic motion + superpositions)
-  KinematicState base_{};  // the basic source's own set values
-  // Phase (c): what phase (d) controls to when given this cycle (else set_), and d − q of the
-  // last cycle it was given (0 without HLI coupling): program coordinate = drive − offset.
-  KinematicState drive_command_{};
-  double previous_drive_position_ = 0.0;
-  double drive_offset_ = 0.0;
-  bool drive_command_given_ = false;
-  plc::CoupleState hli_role_ = plc::CoupleState::kSingle;  // from phase (c), see there
-  bool hli_target() const noexcept {
-    return hli_role_ == plc::CoupleState::kSlave || hli_role_ == plc::CoupleState::kMasterAndSlave;
-  }
-  bool hli_source() const noexcept {
-    return hli_role_ == plc::CoupleState::kMaster || hli_role_ == plc::CoupleState::kMasterAndSlave;
-  }
-  const KinematicState& drive_command() const noexcept {
-    return drive_command_given_ ? drive_command_ : set_;
-  }
-  SlaveLink slave_link_{};
-  uint32_t slave_count_ = 0;  // axes coupled to this one as their master
-  BasicPath slave_path_{};    // while coupled: the master's path of this cycle, transformed
-  // The axis's own job's path, or slave_path_ while coupled.
-  BasicPath basic_path() const noexcept;
-  double target_velocity() const noexcept {  // basic_path().target_velocity, without the rest
-    if (slave_link_.coupled) return slave_path_.target_velocity;
-    return job_.active() ? job_.target_velocity() : 0.0;
-  }
-  double set_jerk_ = 0.0;
-  double previous_set_position_ = 0.0;
-  double previous_measured_ = 0.0;
-  double target_ = 0.0;  // end position of the last positioning / stop; window monitors use it
-
-  // Referenced (StateDWord bit 1): the software limits are monitored only then.
-  bool homed_ = true;
-  void set_homed(bool homed) noexcept {
-    homed_ = homed;
-    monitors_.set_referenced(homed);
-  }
-  bool locked_ = false;  // MC_Stop: motion commands refused until kStopRelease
-  bool has_been_stopped_ = false;
-  bool error_event_ = false;  // an error was raised in this cycle
-  bool enable_seen_ = false;  // the controller enable of the last check_enables()
-  // C7 / C8 (error_propagation.cpp).
-  PropagationDelay propagation_{};
-  bool group_ready_ = false;    // see set_group_ready()
-  bool by_hand_ = false;        // case 2 in force (follows_by_hand() latched)
-  double hand_velocity_ = 0.0;  // push_by_hand(), mm/s
-  ActualValueFilter actual_filter_{};
-  uint32_t errors_raised_ = 0;
-
-  SuperpositionStack stack_{};
-  MasterJob job_{};
-  AxisChannel channel_{};
-  HomingJob homing_{};
-  CommandBuffer buffer_{};
-  Profile& scratch_;  // a start is planned here first, so a refusal changes nothing
-  AxisConfig config_;
 };
 
 }  // namespace nc::detail

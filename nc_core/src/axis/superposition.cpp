@@ -129,17 +129,4 @@ ErrorCode ServoAxis::disable_external(const plc::Command& command) noexcept {
 
 // ---------------------------------------------------------------- the stack's rules
 
-KinematicState ServoAxis::basic_state() const noexcept {
-  return stack_.basic_state(base_, set_);
-}
-
-void ServoAxis::fold_superpositions(plc::CommandState state, ErrorCode code) noexcept {
-  stack_.fold(channel_, state, code);
-  base_ = set_;
-}
-
-void ServoAxis::end_external_generation() noexcept {
-  if (stack_.end_external()) base_ = KinematicState{set_.p, 0.0, 0.0};
-}
-
 }  // namespace nc::detail
