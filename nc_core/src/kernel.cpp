@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "axis/group_errors.hpp"
 #include "axis/servo_axis.hpp"
 #include "kernel/hli_phase.hpp"
 #include "nc_core/config.hpp"
@@ -134,13 +135,14 @@ void Kernel::mark_ready_groups() noexcept {
     }
   }
   for (std::size_t i = 0; i < n; ++i) {
-    if (couplings_.group(i) == i) axes_[i]->set_group_ready(group_ready_[i] != 0);
+    if (couplings_.group(i) == i)
+      detail::GroupErrors(axes_[i]->core()).set_group_ready(group_ready_[i] != 0);
   }
 }
 
 plc::ErrorCode Kernel::push_by_hand(std::size_t axis, double velocity) noexcept {
   if (axis >= axes_.size()) return plc::ErrorCode::kInvalidAxisReference;
-  return axes_[axis]->push_by_hand(velocity);
+  return detail::GroupErrors(axes_[axis]->core()).push_by_hand(velocity);
 }
 
 void Kernel::react_in_groups() noexcept {
@@ -157,7 +159,7 @@ void Kernel::react_in_groups() noexcept {
     for (std::size_t j = 0; j < n; ++j) {
       if (j == i || couplings_.group(j) != group) continue;
       if (snapshots_[j].error != plc::ErrorCode::kNone) continue;
-      axes_[j]->group_error(code);
+      detail::GroupErrors(axes_[j]->core()).group_error(code);
       snapshots_[j].error = code;
       snapshots_[j].error_event = true;
     }

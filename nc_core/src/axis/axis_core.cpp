@@ -1,6 +1,8 @@
 // AxisCore's transitions (axis_core.hpp): the basic source and path of a cycle, a new job taking
-// over the running one.
+// over the running one, the axis error.
 #include "axis/axis_core.hpp"
+
+#include "axis/group_errors.hpp"
 
 namespace nc::detail {
 
@@ -54,6 +56,54 @@ void AxisCore::accept(JobKind kind, uint16_t number, const Profile& profile, dou
     // The override's warning stays while PlcToNc.Override is not taken (read_override()).
     channel_.clear_warnings_except(Warning::kOverrideNotAllowed);
   }
+}
+
+void AxisCore::raise_error(ErrorCode code, bool own) noexcept {
+  if (!channel_.raise(code)) return;  // the first error stays until reset
+  // The motion the error ramp takes over: a homing's stays readable after homing_.clear().
+  const MasterJob& running = running_motion();
+  error_event_ = true;
+  ++errors_raised_;
+  has_been_stopped_ = true;
+  if (job_.active() && channel_.runs(job_.number())) {
+    channel_.answer_current(CommandState::kError, plc::to_id(code));
+  }
+  if (homing_.active()) {
+    if (channel_.runs(homing_.number())) {
+      channel_.answer_current(CommandState::kError, plc::to_id(code));
+    }
+    homing_.clear();
+  }
+  // A slave's MC_GearIn / MC_GearInDyn fails with the axis (it is no longer InGear); the link
+  // itself stays until MC_GearOut (SPEC C7).
+  if (channel_.runs(slave_link_.command)) {
+    channel_.answer_current(CommandState::kError, plc::to_id(code));
+  }
+  buffer_.drop(channel_, CommandState::kError,
+               plc::to_id(code));  // a waiting command fails with the axis
+  // The compensation fails with the axis; external generation is switched off (seed 000 §2.6).
+  fold_superpositions(CommandState::kError, code);
+  if (own)
+    GroupErrors(*this).begin_error_propagation();  // C7: DELAYED, a slave leaves its master here
+  // A coupled slave's motion is its master's: it goes on following (group reactions: SPEC C7).
+  if (slave_link_.coupled) return;
+  if (!channel_.controller_enabled()) {
+    job_.clear();
+    return;
+  }
+  // SPEC A6: the axis stops on its own emergency ramp, from the set state it has now; with the
+  // running job's larger jerk where the emergency jerk would pass the max velocity (K5).
+  const Limits limits = with_running_jerk({config_.max_velocity, config_.acceleration,
+                                           config_.emergency_deceleration, config_.emergency_jerk},
+                                          set_, running, config_.max_velocity);
+  scratch_ = plan_stop(set_, limits.deceleration, limits.jerk);
+  if (!scratch_.ok()) {
+    job_.clear();
+    return;
+  }
+  job_.start(JobKind::kEmergencyStop, 0, scratch_, scratch_.final_state().p, 0.0, limits);
+  target_ = scratch_.final_state().p;
+  monitors_.reset_windows();
 }
 
 }  // namespace nc::detail

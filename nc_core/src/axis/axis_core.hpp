@@ -62,6 +62,10 @@ struct AxisCore {
   double current_direction() const noexcept {
     return set_.v > 0.0 ? 1.0 : (set_.v < 0.0 ? -1.0 : 0.0);
   }
+  // The axis goes into error: the running job fails with `code`, and the set values ramp down
+  // on the emergency deceleration and jerk (SPEC A6). The first error is kept. `own`: the axis's
+  // own error, which starts its group reaction (SPEC C7); false for the group's reaction itself.
+  void raise_error(ErrorCode code, bool own = true) noexcept;
   // The new job replaces the running one: the replaced command is answered kAborted.
   void accept(JobKind kind, uint16_t number, const Profile& profile, double target,
               double target_velocity, const Limits& limits) noexcept;

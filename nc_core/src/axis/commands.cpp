@@ -3,6 +3,7 @@
 // every check runs before anything is written, and a start is planned into a scratch profile.
 #include <cmath>
 
+#include "axis/group_errors.hpp"
 #include "axis/servo_axis.hpp"
 #include "axis/slave_coupling.hpp"
 #include "profile/validate.hpp"
@@ -110,7 +111,7 @@ ErrorCode ServoAxis::handle_now(const plc::Command& command, CouplingPort& port)
     case CommandType::kReset:
       // Answered at once and without taking CmdNo: a reset is not a job. It also cancels an
       // MC_Stop lock (Tc2_MC2: "the locking of the axis is canceled with an MC_Reset").
-      reset_error();
+      GroupErrors(*this).reset_error();
       locked_ = false;
       end_external_generation();  // seed 000 §2.6: an axis reset switches it off
       channel_.answer(command.number, CommandState::kDone);

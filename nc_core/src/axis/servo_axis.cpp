@@ -3,6 +3,7 @@
 // (SPEC A3, A4, A6).
 #include "axis/servo_axis.hpp"
 
+#include "axis/group_errors.hpp"
 #include "axis/slave_coupling.hpp"
 
 #include <cmath>
@@ -73,7 +74,7 @@ void ServoAxis::phase_set_values(AxisSnapshot& snapshot,
   snapshot.set_jerk = set_jerk_;
   // C8: the filtered actual values instead (error_propagation.cpp); without slaves and a filter
   // running it has nothing to do.
-  if (slave_count_ != 0 || actual_filter_.active) publish_for_slaves(snapshot);
+  if (slave_count_ != 0 || actual_filter_.active) GroupErrors(*this).publish_for_slaves(snapshot);
 }
 
 void ServoAxis::phase_drive_command(const KinematicState& drive, ErrorCode stop,
@@ -104,7 +105,7 @@ void ServoAxis::phase_monitors(AxisSnapshot& snapshot) noexcept {
   finish_job();
   snapshot.error = channel_.error();
   snapshot.error_event = error_event_;
-  snapshot.group_reaction_due = propagation_.pending && group_reaction_due();
+  snapshot.group_reaction_due = propagation_.pending && GroupErrors(*this).group_reaction_due();
   const uint32_t control = channel_.ref().PlcToNc.ControlDWord;
   snapshot.controller_enabled = plc::test_bit(control, plc::kControlEnable);
   snapshot.feed_enabled_plus = plc::test_bit(control, plc::kControlFeedEnablePlus);
@@ -121,15 +122,16 @@ void ServoAxis::check_enables() noexcept {
   const bool lost = enable_seen_ && !enabled;
   enable_seen_ = enabled;
   if (slave_count_ == 0) {  // no group to follow this axis: never case 2 (follows_by_hand())
-    end_by_hand();
-  } else if (update_by_hand()) {
+    GroupErrors(*this).end_by_hand();
+  } else if (GroupErrors(*this).update_by_hand()) {
     return;  // C8 case 2: the group follows this master pushed by hand
   }
   if (!enabled) {
     // Losing the controller enable while a command runs is an axis error (enable_loss.cpp);
     // there is no ramp to run (the drive is off), so the job ends here and the set values follow
     // the actual position.
-    if (enable_loss_is_error(lost)) raise_error(ErrorCode::kControllerEnableLost);
+    if (GroupErrors(*this).enable_loss_is_error(lost))
+      raise_error(ErrorCode::kControllerEnableLost);
     job_.clear();
     return;
   }
@@ -306,73 +308,6 @@ void ServoAxis::finish_job() noexcept {
     case JobKind::kEmergencyStop:
       if (job_.generation_ended()) job_.clear();
       break;
-  }
-}
-
-void ServoAxis::raise_error(ErrorCode code, bool own) noexcept {
-  if (!channel_.raise(code)) return;  // the first error stays until reset
-  // The motion the error ramp takes over: a homing's stays readable after homing_.clear().
-  const MasterJob& running = running_motion();
-  error_event_ = true;
-  ++errors_raised_;
-  has_been_stopped_ = true;
-  if (job_.active() && channel_.runs(job_.number())) {
-    channel_.answer_current(CommandState::kError, plc::to_id(code));
-  }
-  if (homing_.active()) {
-    if (channel_.runs(homing_.number())) {
-      channel_.answer_current(CommandState::kError, plc::to_id(code));
-    }
-    homing_.clear();
-  }
-  // A slave's MC_GearIn / MC_GearInDyn fails with the axis (it is no longer InGear); the link
-  // itself stays until MC_GearOut (SPEC C7).
-  if (channel_.runs(slave_link_.command)) {
-    channel_.answer_current(CommandState::kError, plc::to_id(code));
-  }
-  buffer_.drop(channel_, CommandState::kError,
-               plc::to_id(code));  // a waiting command fails with the axis
-  // The compensation fails with the axis; external generation is switched off (seed 000 §2.6).
-  fold_superpositions(CommandState::kError, code);
-  if (own) begin_error_propagation();  // C7: DELAYED, a slave leaves its master here
-  // A coupled slave's motion is its master's: it goes on following (group reactions: SPEC C7).
-  if (slave_link_.coupled) return;
-  if (!channel_.controller_enabled()) {
-    job_.clear();
-    return;
-  }
-  // SPEC A6: the axis stops on its own emergency ramp, from the set state it has now; with the
-  // running job's larger jerk where the emergency jerk would pass the max velocity (K5).
-  const Limits limits = with_running_jerk({config_.max_velocity, config_.acceleration,
-                                           config_.emergency_deceleration, config_.emergency_jerk},
-                                          set_, running, config_.max_velocity);
-  scratch_ = plan_stop(set_, limits.deceleration, limits.jerk);
-  if (!scratch_.ok()) {
-    job_.clear();
-    return;
-  }
-  job_.start(JobKind::kEmergencyStop, 0, scratch_, scratch_.final_state().p, 0.0, limits);
-  target_ = scratch_.final_state().p;
-  monitors_.reset_windows();
-}
-
-void ServoAxis::group_error(ErrorCode code) noexcept {
-  raise_error(code, false);  // not this axis's own error: nothing propagates from it
-}
-
-void ServoAxis::reset_error() noexcept {
-  channel_.clear_warnings();
-  if (!channel_.has_error()) return;
-  channel_.clear_error();
-  propagation_.cancel();  // C7: a reset before the delay has run out: no group reaction
-  if (!job_.active() && !slave_link_.coupled) {
-    // The axis holds where it stands: no following error is carried over into the next start.
-    set_ = KinematicState{drive_.measured_position() - drive_offset_, 0.0, 0.0};
-    // The drive position d steps to the actual one too: no feed-forward kick from that step.
-    previous_drive_position_ = drive_.measured_position();
-    set_jerk_ = 0.0;
-    target_ = set_.p;
-    monitors_.reset_windows();
   }
 }
 

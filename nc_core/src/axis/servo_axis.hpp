@@ -80,23 +80,6 @@ class ServoAxis : private AxisCore {
     phase_monitors(snapshot);
     phase_publish(cycle_counter);
   }
-  // (e), after every axis's monitors: the group reaction (SPEC C7 INSTANTANEOUS) reaches this
-  // axis with the faulty axis's code; the first error stays. A slave goes on following (its
-  // head master's emergency ramp brings it down); a master stops on its emergency ramp.
-  void group_error(ErrorCode code) noexcept;
-
-  // --- error_propagation.cpp (SPEC C7, C8; seed 000 §3.1) ---
-  // Case 2 of C8: this head master's controller enable is off in a group that had no error and
-  // every axis enabled when it went, and couple_slave_to_actual_values is set: the group follows
-  // its actual values (pushed by hand). Losing the controller enable is no error then.
-  bool follows_by_hand() const noexcept;
-  // Kernel, after the group reactions of a cycle with couplings: `ready` = this axis heads a
-  // group in which no axis has an error and every axis has its controller enable (the
-  // precondition of case 2). An uncoupled axis sets it for itself in phase_monitors().
-  void set_group_ready(bool ready) noexcept { group_ready_ = ready; }
-  // Kernel::push_by_hand: the drive of this disabled continuous axis moves at `velocity` (mm/s)
-  // from the next cycle on, until the controller enable returns or another velocity is given.
-  ErrorCode push_by_hand(double velocity) noexcept;
 
  private:
   // --- commands.cpp ---
@@ -121,21 +104,11 @@ class ServoAxis : private AxisCore {
 
   // --- servo_axis.cpp ---
   void check_enables() noexcept;
-  // --- enable_loss.cpp (issue 10 item 4) ---
-  // The controller enable is missing in this cycle (`lost`: it was there in the last one): true
-  // when that is the axis error 0x4260, i.e. a command runs (a job, a homing, or the coupling of
-  // a slave). The one place that decides it.
-  bool enable_loss_is_error(bool lost) const noexcept;
   // Step b: the basic source's set values, then the superposition stack on top.
   void generate_set_values(std::span<const AxisSnapshot> snapshots) noexcept;
   void control_and_drive() noexcept;
   void run_monitors() noexcept;
   void finish_job() noexcept;
-  // The axis goes into error: the running job fails with `code`, and the set values ramp down
-  // on the emergency deceleration and jerk (SPEC A6). The first error is kept. `own`: the axis's
-  // own error, which starts its group reaction (SPEC C7); false for the group's reaction itself.
-  void raise_error(ErrorCode code, bool own = true) noexcept;
-  void reset_error() noexcept;
 
   // --- override.cpp (B3 override, seed 000 §2.2) ---
   // Phase a, first: PlcToNc.Override into the job; above 1'000'000 it is not taken (warning
@@ -173,28 +146,6 @@ class ServoAxis : private AxisCore {
   // Installs scratch_ into the running job (planned from basic_state()), keeping the
   // superpositions on top.
   void install_table(double target, bool final, double level) noexcept;
-
-  // --- error_propagation.cpp ---
-  // From raise_error() for the axis's own error: starts the countdown to the group reaction
-  // (0 cycles unless DELAYED in a group); a DELAYED slave leaves its master's coupling at once
-  // (its link stays in the graph, SlaveLink::detached, until MC_GearOut).
-  void begin_error_propagation() noexcept;
-  // The monitor phase: the group reaction of this axis's error is due in this cycle.
-  bool group_reaction_due() noexcept;
-  // C8: the slaves of this axis follow its filtered actual values in this cycle.
-  bool drives_slaves_by_actual() const noexcept;
-  // The set values phase: the snapshot's set values for the slaves, from the filtered actual
-  // position of the previous cycle while drives_slaves_by_actual().
-  void publish_for_slaves(AxisSnapshot& snapshot) noexcept;
-  // check_enables(), first: enters case 2 when follows_by_hand() holds (a running job ends
-  // CommandAborted) and leaves it when it no longer does (the push by hand ends). True while
-  // in case 2: the lost controller enable is no error.
-  bool update_by_hand() noexcept;
-  // Not (or no longer) in case 2; a push by hand ends with the controller enable.
-  void end_by_hand() noexcept {
-    by_hand_ = false;
-    if (channel_.controller_enabled()) hand_velocity_ = 0.0;
-  }
 
   // --- homing/home_command.cpp (MC_Home, SPEC F; docs/behaviour.md "Homing") ---
   ErrorCode start_home(const plc::Command& command) noexcept;
