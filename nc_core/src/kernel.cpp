@@ -9,6 +9,7 @@
 
 #include "axis/group_errors.hpp"
 #include "axis/servo_axis.hpp"
+#include "homing/axis_homing.hpp"
 #include "kernel/hli_phase.hpp"
 #include "nc_core/config.hpp"
 #include "nc_core/profile.hpp"
@@ -62,7 +63,7 @@ plc::AXIS_REF& Kernel::add_axis(const AxisConfig& config) {
 }
 
 bool Kernel::reference_cam(std::string_view name) const {
-  return find(name).reference_cam();
+  return detail::AxisHoming(find(name).core()).reference_cam();
 }
 
 detail::ServoAxis& Kernel::find(std::string_view name) const {

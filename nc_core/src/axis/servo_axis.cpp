@@ -3,8 +3,12 @@
 // (SPEC A3, A4, A6).
 #include "axis/servo_axis.hpp"
 
+#include "axis/axis_commands.hpp"
+#include "axis/buffered_commands.hpp"
 #include "axis/group_errors.hpp"
+#include "axis/online_change.hpp"
 #include "axis/slave_coupling.hpp"
+#include "homing/axis_homing.hpp"
 
 #include <cmath>
 
@@ -36,13 +40,14 @@ void ServoAxis::phase_commands(CouplingPort& port) noexcept {
   if (two_speed_) return two_speed_->phase_commands();
   error_event_ = false;
   drive_command_given_ = false;
-  read_override();
-  handle_commands(port);
+  OnlineChange(*this).read_override();
+  AxisCommands(*this).handle_commands(port);
   check_enables();
   // command_buffer.cpp: a waiting command takes over; a pass left alone stops. Neither without
   // a waiting command or a pass.
-  if (buffer_.waiting || job_.passing()) run_buffer(port);
-  if (job_.is_motion()) run_online_functions();  // only a motion job has online functions
+  if (buffer_.waiting || job_.passing()) BufferedCommands(*this).run_buffer(port);
+  if (job_.is_motion())
+    OnlineChange(*this).run_online_functions();  // only a motion job has online functions
 }
 
 void ServoAxis::phase_set_values(AxisSnapshot& snapshot,
@@ -189,7 +194,7 @@ void ServoAxis::generate_set_values(std::span<const AxisSnapshot> snapshots) noe
       break;
     }
     case SetValueSource::kHomingJob:
-      run_homing();
+      AxisHoming(*this).run_homing();
       break;
     case SetValueSource::kHold:
       if (stack_.moves_alone()) {
