@@ -86,7 +86,8 @@ const AxisConfig& Kernel::config(std::string_view name) const {
   return find(name).config();
 }
 const plc::NCTOIO_DRIVE_TWO_SPEED& Kernel::two_speed_output(std::string_view name) const {
-  const plc::NCTOIO_DRIVE_TWO_SPEED* image = find(name).two_speed_output();
+  const detail::AxisCore& axis = find(name).core();
+  const plc::NCTOIO_DRIVE_TWO_SPEED* image = axis.two_speed_ ? &axis.two_speed_->output() : nullptr;
   if (image == nullptr) {
     throw ConfigError("/axes", "has this axis, but not of kind two_speed", std::string(name));
   }

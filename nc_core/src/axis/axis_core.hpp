@@ -145,6 +145,8 @@ struct AxisCore {
   bool by_hand_ = false;        // case 2 in force (follows_by_hand() latched)
   double hand_velocity_ = 0.0;  // push_by_hand(), mm/s
   ActualValueFilter actual_filter_{};
+  // The axis errors raised, counted wrapping (the HLI phase: an error raised and reset between two
+  // phases (c) still shows as a change).
   uint32_t errors_raised_ = 0;
 
   SuperpositionStack stack_{};

@@ -1,16 +1,19 @@
-// The phases of the NC cycle for one axis (the kernel runs each over all axes): set values from
-// the master job, position control, drive and encoder, monitors, job completion and the axis error
-// (SPEC A3, A4, A6).
+// The phases of the NC cycle for one axis (the kernel runs each over all axes), and the two parts
+// they call in every cycle, kept in this file so that they inline into the phases: AxisMotion (set
+// values, position control, drive) and AxisMonitoring (enables, monitors, job completion) (SPEC
+// A3, A4, A6).
 #include "axis/servo_axis.hpp"
 
+#include <cmath>
+
 #include "axis/axis_commands.hpp"
+#include "axis/axis_monitoring.hpp"
+#include "axis/axis_motion.hpp"
 #include "axis/buffered_commands.hpp"
 #include "axis/group_errors.hpp"
 #include "axis/online_change.hpp"
 #include "axis/slave_coupling.hpp"
 #include "homing/axis_homing.hpp"
-
-#include <cmath>
 
 namespace nc::detail {
 
@@ -42,7 +45,7 @@ void ServoAxis::phase_commands(CouplingPort& port) noexcept {
   drive_command_given_ = false;
   OnlineChange(*this).read_override();
   AxisCommands(*this).handle_commands(port);
-  check_enables();
+  AxisMonitoring(*this).check_enables();
   // command_buffer.cpp: a waiting command takes over; a pass left alone stops. Neither without
   // a waiting command or a pass.
   if (buffer_.waiting || job_.passing()) BufferedCommands(*this).run_buffer(port);
@@ -65,7 +68,7 @@ void ServoAxis::phase_set_values(AxisSnapshot& snapshot,
                             slave_link_.factor * master.target_velocity};
     target_ = slave_path_.target;
   }
-  generate_set_values(snapshots);
+  AxisMotion(*this).generate_set_values(snapshots);
   const BasicPath path = basic_path();
   snapshot.target_position = target_;
   snapshot.target_velocity = path.target_velocity;
@@ -94,7 +97,7 @@ void ServoAxis::phase_drive_command(const KinematicState& drive, ErrorCode stop,
 
 void ServoAxis::phase_drive(AxisSnapshot& snapshot) noexcept {
   if (two_speed_) return two_speed_->phase_drive(snapshot);
-  control_and_drive();
+  AxisMotion(*this).control_and_drive();
   previous_drive_position_ = drive_command().p;
   snapshot.set_position = set_.p;  // without the controller enable it follows the actual one
   snapshot.set_velocity = set_.v;
@@ -106,8 +109,8 @@ void ServoAxis::phase_drive(AxisSnapshot& snapshot) noexcept {
 
 void ServoAxis::phase_monitors(AxisSnapshot& snapshot) noexcept {
   if (two_speed_) return two_speed_->phase_monitors(snapshot);
-  run_monitors();
-  finish_job();
+  AxisMonitoring(*this).run_monitors();
+  AxisMonitoring(*this).finish_job();
   snapshot.error = channel_.error();
   snapshot.error_event = error_event_;
   snapshot.group_reaction_due = propagation_.pending && GroupErrors(*this).group_reaction_due();
@@ -122,48 +125,113 @@ void ServoAxis::phase_monitors(AxisSnapshot& snapshot) noexcept {
   }
 }
 
-void ServoAxis::check_enables() noexcept {
-  const bool enabled = channel_.controller_enabled();
-  const bool lost = enable_seen_ && !enabled;
-  enable_seen_ = enabled;
-  if (slave_count_ == 0) {  // no group to follow this axis: never case 2 (follows_by_hand())
-    GroupErrors(*this).end_by_hand();
-  } else if (GroupErrors(*this).update_by_hand()) {
+// --- AxisMonitoring ---
+
+void AxisMonitoring::check_enables() noexcept {
+  const bool enabled = a_.channel_.controller_enabled();
+  const bool lost = a_.enable_seen_ && !enabled;
+  a_.enable_seen_ = enabled;
+  if (a_.slave_count_ == 0) {  // no group to follow this axis: never case 2 (follows_by_hand())
+    GroupErrors(a_).end_by_hand();
+  } else if (GroupErrors(a_).update_by_hand()) {
     return;  // C8 case 2: the group follows this master pushed by hand
   }
   if (!enabled) {
     // Losing the controller enable while a command runs is an axis error (enable_loss.cpp);
     // there is no ramp to run (the drive is off), so the job ends here and the set values follow
     // the actual position.
-    if (GroupErrors(*this).enable_loss_is_error(lost))
-      raise_error(ErrorCode::kControllerEnableLost);
-    job_.clear();
+    if (GroupErrors(a_).enable_loss_is_error(lost))
+      a_.raise_error(ErrorCode::kControllerEnableLost);
+    a_.job_.clear();
     return;
   }
   // Feed enable removed in the direction of travel: the axis stops on its error ramp (also when
   // external setpoints move it; a coupled slave's error stops its group, see Kernel).
-  if ((job_.is_motion() || homing_.active() || stack_.external().enabled() ||
-       slave_link_.coupled) &&
-      !channel_.has_error()) {
-    if (set_.v > 0.0 && !channel_.feed_enabled(1.0)) {
-      raise_error(ErrorCode::kFeedEnablePlusMissing);
-    } else if (set_.v < 0.0 && !channel_.feed_enabled(-1.0)) {
-      raise_error(ErrorCode::kFeedEnableMinusMissing);
+  if ((a_.job_.is_motion() || a_.homing_.active() || a_.stack_.external().enabled() ||
+       a_.slave_link_.coupled) &&
+      !a_.channel_.has_error()) {
+    if (a_.set_.v > 0.0 && !a_.channel_.feed_enabled(1.0)) {
+      a_.raise_error(ErrorCode::kFeedEnablePlusMissing);
+    } else if (a_.set_.v < 0.0 && !a_.channel_.feed_enabled(-1.0)) {
+      a_.raise_error(ErrorCode::kFeedEnableMinusMissing);
     }
   }
 }
 
-void ServoAxis::generate_set_values(std::span<const AxisSnapshot> snapshots) noexcept {
-  previous_set_position_ = set_.p;
-  if (!channel_.controller_enabled()) {
-    set_jerk_ = 0.0;            // no generation: control_and_drive() makes the set position follow
-    end_external_generation();  // seed 000 §2.6: the controller enable's edge switches it off
+void AxisMonitoring::run_monitors() noexcept {
+  const double actual = a_.drive_.measured_position();
+  const bool armed = a_.channel_.controller_enabled() && !a_.channel_.has_error();
+  if (a_.monitors_.following_error(a_.drive_command().p - actual, armed)) {
+    a_.raise_error(ErrorCode::kFollowingErrorPosition);
+  }
+  // Software limits during motion: the set position passes an enabled limit while it moves
+  // outward. Moving back in from outside (seed 000 §2.1 note 5) is not an error.
+  const bool moving_on_its_own = a_.job_.active() && a_.job_.kind() != JobKind::kEmergencyStop;
+  if (!a_.channel_.has_error() && (moving_on_its_own || a_.slave_link_.coupled)) {
+    if (a_.set_.v > 0.0 && a_.monitors_.above_max(a_.set_.p)) {
+      a_.raise_error(ErrorCode::kSoftLimitMaxDuringMotion);
+    } else if (a_.set_.v < 0.0 && a_.monitors_.below_min(a_.set_.p)) {
+      a_.raise_error(ErrorCode::kSoftLimitMinDuringMotion);
+    }
+  }
+  // The windows count only once set-value generation rests: the job has ended and the external
+  // generator (seed 000 §2.6) is not feeding a motion (direction ±1), so a fed motion passing
+  // through its target window is not "in target position".
+  const bool settled =
+      a_.channel_.controller_enabled() && !a_.stack_.external().moving() &&
+      !a_.slave_link_.coupled && !a_.homing_.active() &&
+      (!a_.job_.active() || (a_.job_.kind() != JobKind::kVelocity && a_.job_.generation_ended()));
+  a_.monitors_.windows(actual - a_.drive_offset_, a_.target_, settled);  // in program coordinates
+}
+
+void AxisMonitoring::finish_job() noexcept {
+  if (a_.homing_.finished()) {
+    a_.channel_.answer_current(CommandState::kDone);
+    a_.homing_.clear();
+    a_.target_ = a_.set_.p;  // where the homing stopped: the windows watch it from now on
+  }
+  switch (a_.job_.kind()) {
+    case JobKind::kNone:
+      break;
+    case JobKind::kPosition:
+      // Done = set-value generation ended and the target window reached (or switched off). A
+      // pass (blending) is done when the waiting command takes over (command_buffer.cpp).
+      if (a_.job_.generation_ended() && !a_.job_.passing() && a_.monitors_.in_target_position()) {
+        a_.channel_.answer_current(CommandState::kDone);
+        a_.job_.clear();
+      }
+      break;
+    case JobKind::kVelocity:
+      if (a_.job_.velocity_reached() && a_.channel_.cmd_state() == CommandState::kActive) {
+        a_.channel_.answer_current(CommandState::kReached);
+      }
+      break;
+    case JobKind::kHalt:
+    case JobKind::kStop:
+      if (a_.job_.generation_ended()) {
+        a_.channel_.answer_current(CommandState::kDone);
+        a_.job_.clear();
+      }
+      break;
+    case JobKind::kEmergencyStop:
+      if (a_.job_.generation_ended()) a_.job_.clear();
+      break;
+  }
+}
+
+// --- AxisMotion ---
+
+void AxisMotion::generate_set_values(std::span<const AxisSnapshot> snapshots) noexcept {
+  a_.previous_set_position_ = a_.set_.p;
+  if (!a_.channel_.controller_enabled()) {
+    a_.set_jerk_ = 0.0;  // no generation: control_and_drive() makes the set position follow
+    a_.end_external_generation();  // seed 000 §2.6: the controller enable's edge switches it off
     // A coupled slave follows again from where it stands when the enable returns; its
     // compensation ends with the enable (the offset taken anew includes what it did).
-    if (slave_link_.coupled) {
-      slave_link_.retake_offset = true;
-      if (stack_.compensation().running() || stack_.held() != 0.0) {
-        fold_superpositions(CommandState::kAborted);
+    if (a_.slave_link_.coupled) {
+      a_.slave_link_.retake_offset = true;
+      if (a_.stack_.compensation().running() || a_.stack_.held() != 0.0) {
+        a_.fold_superpositions(CommandState::kAborted);
       }
     }
     return;
@@ -171,149 +239,89 @@ void ServoAxis::generate_set_values(std::span<const AxisSnapshot> snapshots) noe
   bool not_finite = false;
   bool too_large = false;
   bool absolute_ended = false;
-  switch (source()) {
+  switch (a_.source()) {
     case SetValueSource::kPtpJob:
-      base_ = job_.advance(cycle_time_);
-      set_jerk_ = job_.jerk();
+      a_.base_ = a_.job_.advance(a_.cycle_time_);
+      a_.set_jerk_ = a_.job_.jerk();
       break;
     case SetValueSource::kExternalAbsolute: {
       const ExternalSetpoint::Step step =
-          stack_.external().take(channel_.ref().PlcToNc, cycle_time_);
-      base_ = step.state;
-      set_jerk_ = 0.0;
+          a_.stack_.external().take(a_.channel_.ref().PlcToNc, a_.cycle_time_);
+      a_.base_ = step.state;
+      a_.set_jerk_ = 0.0;
       not_finite = step.not_finite;
       too_large = step.too_large;
       absolute_ended = step.finished;
       break;
     }
     case SetValueSource::kSlaveLink: {
-      const AxisSnapshot& master = snapshots[slave_link_.master];
-      if (slave_link_.cyclic) SlaveCoupling(*this).step_cyclic_factor(master);
-      base_ = slave_link_.sample(master, set_.p);
-      set_jerk_ = slave_link_.factor * master.set_jerk;
+      const AxisSnapshot& master = snapshots[a_.slave_link_.master];
+      if (a_.slave_link_.cyclic) SlaveCoupling(a_).step_cyclic_factor(master);
+      a_.base_ = a_.slave_link_.sample(master, a_.set_.p);
+      a_.set_jerk_ = a_.slave_link_.factor * master.set_jerk;
       break;
     }
     case SetValueSource::kHomingJob:
-      AxisHoming(*this).run_homing();
+      AxisHoming(a_).run_homing();
       break;
     case SetValueSource::kHold:
-      if (stack_.moves_alone()) {
-        base_.v = 0.0;  // the basic motion holds; a superposition may still move the axis
-        base_.a = 0.0;
+      if (a_.stack_.moves_alone()) {
+        a_.base_.v = 0.0;  // the basic motion holds; a superposition may still move the axis
+        a_.base_.a = 0.0;
       } else {
-        base_ = KinematicState{set_.p, 0.0, 0.0};  // the axis holds where it is
-        stack_.drop_held();
+        a_.base_ = KinematicState{a_.set_.p, 0.0, 0.0};  // the axis holds where it is
+        a_.stack_.drop_held();
       }
-      set_jerk_ = 0.0;
+      a_.set_jerk_ = 0.0;
       break;
   }
-  if (stack_.empty()) {
+  if (a_.stack_.empty()) {
     // The steady case: superimpose() would add the held ±0.0 and nothing else (the addition
     // kept for the sign of a zero). Without the stack there is no absolute packet either.
-    set_ = KinematicState{base_.p + stack_.held(), base_.v, base_.a};
+    a_.set_ = KinematicState{a_.base_.p + a_.stack_.held(), a_.base_.v, a_.base_.a};
     return;
   }
-  const BasicPath path = basic_path();
+  const BasicPath path = a_.basic_path();
   SuperpositionStack::Basic basic;
-  basic.state = base_;
+  basic.state = a_.base_;
   basic.path_running = path.running;
   basic.has_target = path.has_target;
   basic.target = path.target;
   const SuperpositionStack::Result r =
-      stack_.superimpose(basic, channel_.ref().PlcToNc, channel_, cycle_time_);
-  set_ = r.set;
-  if (r.target_moved) target_ = r.target;
+      a_.stack_.superimpose(basic, a_.channel_.ref().PlcToNc, a_.channel_, a_.cycle_time_);
+  a_.set_ = r.set;
+  if (r.target_moved) a_.target_ = r.target;
   if (absolute_ended) {
-    base_ = KinematicState{set_.p, 0.0, 0.0};  // the last packet taken: the axis holds there
-    stack_.drop_held();
+    a_.base_ = KinematicState{a_.set_.p, 0.0, 0.0};  // the last packet taken: the axis holds there
+    a_.stack_.drop_held();
   }
   // A packet with NaN or inf is not taken; the axis must not run on it (SPEC B8).
-  if (not_finite || r.not_finite) raise_error(ErrorCode::kParameterNotFinite);
+  if (not_finite || r.not_finite) a_.raise_error(ErrorCode::kParameterNotFinite);
   // A finite packet out of range (external_setpoint.hpp) is not taken either: 0x4359.
-  if (too_large || r.too_large) raise_error(ErrorCode::kSetVelocityNotAllowed);
+  if (too_large || r.too_large) a_.raise_error(ErrorCode::kSetVelocityNotAllowed);
 }
 
-void ServoAxis::control_and_drive() noexcept {
-  if (encoder_) {
+void AxisMotion::control_and_drive() noexcept {
+  if (a_.encoder_) {
     // Encoder / virtual axis: no controller, the actual values are the set values.
-    const KinematicState& command = drive_command();
-    drive_.follow(command.p, command.v, command.a);
+    const KinematicState& command = a_.drive_command();
+    a_.drive_.follow(command.p, command.v, command.a);
     return;
   }
-  if (!channel_.controller_enabled()) {
+  if (!a_.channel_.controller_enabled()) {
     // TwinCAT: without controller enable the drive is off and the set position follows the
     // actual position, so there is no following error to jump at when the enable returns.
-    drive_.step(hand_velocity_, hand_velocity_ != 0.0);  // Kernel::push_by_hand, else off
-    drive_command_ = KinematicState{drive_.measured_position(), 0.0, 0.0};
-    set_ = KinematicState{drive_.measured_position() - drive_offset_, 0.0, 0.0};
-    target_ = set_.p;
+    a_.drive_.step(a_.hand_velocity_, a_.hand_velocity_ != 0.0);  // Kernel::push_by_hand, else off
+    a_.drive_command_ = KinematicState{a_.drive_.measured_position(), 0.0, 0.0};
+    a_.set_ = KinematicState{a_.drive_.measured_position() - a_.drive_offset_, 0.0, 0.0};
+    a_.target_ = a_.set_.p;
     return;
   }
-  const double previous = drive_command_given_ ? previous_drive_position_ : previous_set_position_;
-  const double command =
-      controller_.command(previous, drive_command().p, drive_.measured_position(), cycle_time_);
-  drive_.step(command, true);
-}
-
-void ServoAxis::run_monitors() noexcept {
-  const double actual = drive_.measured_position();
-  const bool armed = channel_.controller_enabled() && !channel_.has_error();
-  if (monitors_.following_error(drive_command().p - actual, armed)) {
-    raise_error(ErrorCode::kFollowingErrorPosition);
-  }
-  // Software limits during motion: the set position passes an enabled limit while it moves
-  // outward. Moving back in from outside (seed 000 §2.1 note 5) is not an error.
-  const bool moving_on_its_own = job_.active() && job_.kind() != JobKind::kEmergencyStop;
-  if (!channel_.has_error() && (moving_on_its_own || slave_link_.coupled)) {
-    if (set_.v > 0.0 && monitors_.above_max(set_.p)) {
-      raise_error(ErrorCode::kSoftLimitMaxDuringMotion);
-    } else if (set_.v < 0.0 && monitors_.below_min(set_.p)) {
-      raise_error(ErrorCode::kSoftLimitMinDuringMotion);
-    }
-  }
-  // The windows count only once set-value generation rests: the job has ended and the external
-  // generator (seed 000 §2.6) is not feeding a motion (direction ±1), so a fed motion passing
-  // through its target window is not "in target position".
-  const bool settled =
-      channel_.controller_enabled() && !stack_.external().moving() && !slave_link_.coupled &&
-      !homing_.active() &&
-      (!job_.active() || (job_.kind() != JobKind::kVelocity && job_.generation_ended()));
-  monitors_.windows(actual - drive_offset_, target_, settled);  // in program coordinates
-}
-
-void ServoAxis::finish_job() noexcept {
-  if (homing_.finished()) {
-    channel_.answer_current(CommandState::kDone);
-    homing_.clear();
-    target_ = set_.p;  // where the homing stopped: the windows watch it from now on
-  }
-  switch (job_.kind()) {
-    case JobKind::kNone:
-      break;
-    case JobKind::kPosition:
-      // Done = set-value generation ended and the target window reached (or switched off). A
-      // pass (blending) is done when the waiting command takes over (command_buffer.cpp).
-      if (job_.generation_ended() && !job_.passing() && monitors_.in_target_position()) {
-        channel_.answer_current(CommandState::kDone);
-        job_.clear();
-      }
-      break;
-    case JobKind::kVelocity:
-      if (job_.velocity_reached() && channel_.cmd_state() == CommandState::kActive) {
-        channel_.answer_current(CommandState::kReached);
-      }
-      break;
-    case JobKind::kHalt:
-    case JobKind::kStop:
-      if (job_.generation_ended()) {
-        channel_.answer_current(CommandState::kDone);
-        job_.clear();
-      }
-      break;
-    case JobKind::kEmergencyStop:
-      if (job_.generation_ended()) job_.clear();
-      break;
-  }
+  const double previous =
+      a_.drive_command_given_ ? a_.previous_drive_position_ : a_.previous_set_position_;
+  const double command = a_.controller_.command(previous, a_.drive_command().p,
+                                                a_.drive_.measured_position(), a_.cycle_time_);
+  a_.drive_.step(command, true);
 }
 
 }  // namespace nc::detail

@@ -35,15 +35,13 @@ class ServoAxis : private AxisCore {
   // `scratch`: the kernel's planning profile, shared by all its axes (one plans at a time).
   ServoAxis(const AxisConfig& config, double cycle_time, std::size_t index, Profile& scratch);
 
-  // The state the feature classes work on (axis_core.hpp); the coupling reaches other axes' too.
+  // The state the feature classes work on (axis_core.hpp); the coupling reaches other axes' too,
+  // the HLI phase reads an axis's error, errors_raised_ and enables before phase (c).
   AxisCore& core() noexcept { return *this; }
+  const AxisCore& core() const noexcept { return *this; }
   plc::AXIS_REF& ref() noexcept { return channel_.ref(); }
   const plc::AXIS_REF& ref() const noexcept { return channel_.ref(); }
   const AxisConfig& config() const noexcept { return config_; }
-  // Kind kTwoSpeed: the 12-byte drive image of this cycle; nullptr for every other kind.
-  const plc::NCTOIO_DRIVE_TWO_SPEED* two_speed_output() const noexcept {
-    return two_speed_ ? &two_speed_->output() : nullptr;
-  }
 
   // The phases of one NC cycle (steps a … f of docs/architecture.md "One tick"); the kernel
   // calls each for every axis before the next. The snapshot is what other axes may read.
@@ -58,14 +56,6 @@ class ServoAxis : private AxisCore {
   // master), kept until the next call, for CoupleState and the refusal of external setpoints.
   void phase_drive_command(const KinematicState& drive, ErrorCode stop,
                            plc::CoupleState role) noexcept;
-  // What the HLI phase reads of the axis before phase (c): an axis error, the controller enable,
-  // external setpoint generation enabled.
-  bool has_error() const noexcept { return channel_.has_error(); }
-  // Counts the axis errors raised (wrapping): an error raised and reset between two phases (c)
-  // still shows as a change.
-  uint32_t errors_raised() const noexcept { return errors_raised_; }
-  bool controller_enabled() const noexcept { return channel_.controller_enabled(); }
-  bool external_enabled() const noexcept { return stack_.external().enabled(); }
   void phase_drive(AxisSnapshot& snapshot) noexcept;     // (d)
   void phase_monitors(AxisSnapshot& snapshot) noexcept;  // (e)
   void phase_publish(uint64_t cycle_counter) noexcept;   // (f)
@@ -78,15 +68,6 @@ class ServoAxis : private AxisCore {
     phase_monitors(snapshot);
     phase_publish(cycle_counter);
   }
-
- private:
-  // --- servo_axis.cpp ---
-  void check_enables() noexcept;
-  // Step b: the basic source's set values, then the superposition stack on top.
-  void generate_set_values(std::span<const AxisSnapshot> snapshots) noexcept;
-  void control_and_drive() noexcept;
-  void run_monitors() noexcept;
-  void finish_job() noexcept;
 };
 
 }  // namespace nc::detail
