@@ -18,9 +18,9 @@ namespace nc::detail {
 
 struct CouplingPort;
 
-class AxisCommands {
+class AxisCommands : public AxisPart {
  public:
-  explicit AxisCommands(AxisCore& axis) noexcept : a_(axis) {}
+  using AxisPart::AxisPart;
 
   void handle_commands(CouplingPort& port) noexcept;
   // Acts on a command now (BufferMode not looked at); the error code of a refusal.
@@ -47,8 +47,6 @@ class AxisCommands {
   ErrorCode start_to_target(uint16_t number, double target, const Limits& limits) noexcept;
   ErrorCode check_dynamics(const plc::Command& command, Limits& limits) const noexcept;
   ErrorCode start_modulo(const plc::Command& command) noexcept;
-
-  AxisCore& a_;
 };
 
 }  // namespace nc::detail

@@ -158,4 +158,14 @@ struct AxisCore {
   AxisConfig config_;
 };
 
+// The base of the parts of a servo axis (axis_commands.hpp, online_change.hpp, …): a view on one
+// axis's AxisCore, made for one call and owning nothing.
+class AxisPart {
+ public:
+  explicit AxisPart(AxisCore& axis) noexcept : a_(axis) {}
+
+ protected:
+  AxisCore& a_;
+};
+
 }  // namespace nc::detail

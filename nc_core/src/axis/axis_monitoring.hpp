@@ -11,16 +11,13 @@
 
 namespace nc::detail {
 
-class AxisMonitoring {
+class AxisMonitoring : public AxisPart {
  public:
-  explicit AxisMonitoring(AxisCore& axis) noexcept : a_(axis) {}
+  using AxisPart::AxisPart;
 
   void check_enables() noexcept;
   void run_monitors() noexcept;
   void finish_job() noexcept;
-
- private:
-  AxisCore& a_;
 };
 
 }  // namespace nc::detail

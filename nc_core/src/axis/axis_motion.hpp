@@ -15,17 +15,14 @@
 
 namespace nc::detail {
 
-class AxisMotion {
+class AxisMotion : public AxisPart {
  public:
-  explicit AxisMotion(AxisCore& axis) noexcept : a_(axis) {}
+  using AxisPart::AxisPart;
 
   // Phase b; `snapshots`: every axis's, a slave samples its master's.
   void generate_set_values(std::span<const AxisSnapshot> snapshots) noexcept;
   // Phase d.
   void control_and_drive() noexcept;
-
- private:
-  AxisCore& a_;
 };
 
 }  // namespace nc::detail

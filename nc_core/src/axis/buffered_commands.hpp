@@ -16,9 +16,9 @@ namespace nc::detail {
 
 struct CouplingPort;
 
-class BufferedCommands {
+class BufferedCommands : public AxisPart {
  public:
-  explicit BufferedCommands(AxisCore& axis) noexcept : a_(axis) {}
+  using AxisPart::AxisPart;
 
   // A move or halt with a BufferMode other than MC_Aborting: checked, then started at once when
   // the running job is already finished for it, else kept waiting (kBuffered) — a blending mode
@@ -50,8 +50,6 @@ class BufferedCommands {
                         double& end) const noexcept;
   // A pass table ended with nothing to take over: the axis stops from where it is.
   void stop_pass() noexcept;
-
-  AxisCore& a_;
 };
 
 }  // namespace nc::detail

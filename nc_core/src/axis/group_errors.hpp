@@ -13,9 +13,9 @@
 
 namespace nc::detail {
 
-class GroupErrors {
+class GroupErrors : public AxisPart {
  public:
-  explicit GroupErrors(AxisCore& axis) noexcept : a_(axis) {}
+  using AxisPart::AxisPart;
 
   // From raise_error() for the axis's own error: starts the countdown to the group reaction
   // (0 cycles unless DELAYED in a group); a DELAYED slave leaves its master's coupling at once
@@ -61,8 +61,6 @@ class GroupErrors {
   bool follows_by_hand() const noexcept;
   // C8: the slaves of this axis follow its filtered actual values in this cycle.
   bool drives_slaves_by_actual() const noexcept;
-
-  AxisCore& a_;
 };
 
 }  // namespace nc::detail

@@ -15,9 +15,9 @@
 
 namespace nc::detail {
 
-class OnlineChange {
+class OnlineChange : public AxisPart {
  public:
-  explicit OnlineChange(AxisCore& axis) noexcept : a_(axis) {}
+  using AxisPart::AxisPart;
 
   // Phase a, first: PlcToNc.Override into the job; above 1'000'000 it is not taken (warning
   // 0x4238).
@@ -54,8 +54,6 @@ class OnlineChange {
   // Installs scratch_ into the running job (planned from basic_state()), keeping the
   // superpositions on top.
   void install_table(double target, bool final, double level) noexcept;
-
-  AxisCore& a_;
 };
 
 }  // namespace nc::detail

@@ -17,9 +17,9 @@ namespace nc::detail {
 
 struct CouplingPort;
 
-class SlaveCoupling {
+class SlaveCoupling : public AxisPart {
  public:
-  explicit SlaveCoupling(AxisCore& axis) noexcept : a_(axis) {}
+  using AxisPart::AxisPart;
 
   ErrorCode gear_in(const plc::Command& command, CouplingPort& port) noexcept;
   ErrorCode gear_in_dyn(const plc::Command& command, CouplingPort& port) noexcept;
@@ -55,8 +55,6 @@ class SlaveCoupling {
   bool at_rest_for_coupling() const noexcept;
   // MC_GearOut of a slave that left its master on its own error: the link leaves the graph.
   ErrorCode release_detached(const plc::Command& command, CouplingPort& port) noexcept;
-
-  AxisCore& a_;
 };
 
 }  // namespace nc::detail

@@ -12,17 +12,14 @@
 
 namespace nc::detail {
 
-class SuperpositionCommands {
+class SuperpositionCommands : public AxisPart {
  public:
-  explicit SuperpositionCommands(AxisCore& axis) noexcept : a_(axis) {}
+  using AxisPart::AxisPart;
 
   ErrorCode start_compensation(const plc::Command& command) noexcept;
   ErrorCode stop_compensation(const plc::Command& command) noexcept;
   ErrorCode enable_external(const plc::Command& command) noexcept;
   ErrorCode disable_external(const plc::Command& command) noexcept;
-
- private:
-  AxisCore& a_;
 };
 
 }  // namespace nc::detail

@@ -11,9 +11,9 @@
 
 namespace nc::detail {
 
-class AxisHoming {
+class AxisHoming : public AxisPart {
  public:
-  explicit AxisHoming(AxisCore& axis) noexcept : a_(axis) {}
+  using AxisPart::AxisPart;
 
   ErrorCode start_home(const plc::Command& command) noexcept;
   // Phase b with the homing job as the source.
@@ -25,8 +25,6 @@ class AxisHoming {
   // Position setting: every displayed position (set, actual, target) moves by `delta`; nothing
   // moves physically and the following error stays.
   void shift_position(double delta) noexcept;
-
-  AxisCore& a_;
 };
 
 }  // namespace nc::detail
