@@ -22,7 +22,11 @@ class AxisCommands : public AxisPart {
  public:
   using AxisPart::AxisPart;
 
-  void handle_commands(CouplingPort& port) noexcept;
+  // The commands posted since the last cycle, in order (nothing posted, the steady case: inline,
+  // no call).
+  void handle_commands(CouplingPort& port) noexcept {
+    if (a_.channel_.ref().Mailbox.pending() != 0) drain(port);
+  }
   // Acts on a command now (BufferMode not looked at); the error code of a refusal.
   ErrorCode handle_now(const plc::Command& command, CouplingPort& port) noexcept;
   // The checks every motion start (MoveAbsolute/Relative/Modulo/Velocity) makes, in this order:
@@ -38,6 +42,7 @@ class AxisCommands : public AxisPart {
                        double& end) const noexcept;
 
  private:
+  void drain(CouplingPort& port) noexcept;
   void handle(const plc::Command& command, CouplingPort& port) noexcept;
   ErrorCode start_position(const plc::Command& command) noexcept;
   ErrorCode start_velocity(const plc::Command& command) noexcept;

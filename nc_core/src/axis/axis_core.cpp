@@ -8,31 +8,6 @@ namespace nc::detail {
 
 using plc::CommandState;
 
-BasicPath AxisCore::basic_path() const noexcept {
-  if (slave_link_.coupled) return slave_path_;
-  const JobKind kind = job_.kind();
-  BasicPath path;
-  path.running = job_.active() && !job_.generation_ended();
-  path.stopping =
-      kind == JobKind::kHalt || kind == JobKind::kStop || kind == JobKind::kEmergencyStop;
-  path.positioning = kind == JobKind::kPosition;
-  path.has_target = job_.active() && kind != JobKind::kVelocity;
-  path.target = job_.target();
-  path.target_velocity = job_.active() ? job_.target_velocity() : 0.0;
-  return path;
-}
-
-SetValueSource AxisCore::source() const noexcept {
-  if (slave_link_.coupled) return SetValueSource::kSlaveLink;  // a coupled slave has no job
-  if (homing_.active()) return SetValueSource::kHomingJob;
-  if (job_.active()) return SetValueSource::kPtpJob;
-  const ExternalSetpoint& external = stack_.external();
-  if (external.taking() && external.type() == ExternalSetpoint::Type::kAbsolute) {
-    return SetValueSource::kExternalAbsolute;
-  }
-  return SetValueSource::kHold;
-}
-
 void AxisCore::accept(JobKind kind, uint16_t number, const Profile& profile, double target,
                       double target_velocity, const Limits& limits) noexcept {
   // A running homing is replaced as a job would be (MC_Stop aborts it; Homed stays as it is).

@@ -16,8 +16,9 @@ class AxisMonitoring : public AxisPart {
   using AxisPart::AxisPart;
 
   void check_enables() noexcept;
-  void run_monitors() noexcept;
-  void finish_job() noexcept;
+  // Inlined into the monitor phase (only servo_axis.cpp calls them).
+  [[gnu::always_inline]] inline void run_monitors() noexcept;
+  [[gnu::always_inline]] inline void finish_job() noexcept;
 };
 
 }  // namespace nc::detail

@@ -38,9 +38,8 @@ ErrorCode check_dynamic(double value, ErrorCode code) noexcept {
 
 }  // namespace
 
-void AxisCommands::handle_commands(CouplingPort& port) noexcept {
+void AxisCommands::drain(CouplingPort& port) noexcept {
   plc::CommandMailbox& mailbox = a_.channel_.ref().Mailbox;
-  if (mailbox.pending() == 0) return;  // the steady case: no call into the mailbox
   plc::Command command;
   while (mailbox.take(command))
     handle(command, port);

@@ -43,23 +43,6 @@ constexpr int kVelocityAttempts = 8;
 
 }  // namespace
 
-void OnlineChange::run_online_functions() noexcept {
-  // Only a running motion job: no override while a stop (Halt, Stop, error ramp) is active.
-  if (!a_.channel_.controller_enabled() || a_.channel_.has_error() || !a_.job_.is_motion()) return;
-  bool replanned = false;
-  Activation& activation = a_.job_.activation();
-  if (a_.job_.kind() == JobKind::kPosition && activation.armed) {
-    const bool due =
-        activation.immediate || (activation.direction * (a_.set_.p - activation.position) >= 0.0 &&
-                                 activation.direction * a_.set_.v > 0.0);
-    if (due && !a_.job_.in_brake_phase(a_.cycle_time_)) {
-      activation.armed = false;
-      replanned = activate_velocity(activation.velocity);
-    }
-  }
-  if (!replanned && a_.job_.override_value() != a_.job_.handled_override()) apply_override();
-}
-
 bool OnlineChange::stop_active() const noexcept {
   return a_.locked_ || a_.job_.kind() == JobKind::kHalt || a_.job_.kind() == JobKind::kStop;
 }

@@ -47,17 +47,6 @@ Limits with_running_jerk(const Limits& limits, const KinematicState& from, const
   return l;
 }
 
-void OnlineChange::read_override() noexcept {
-  const uint32_t value = a_.channel_.ref().PlcToNc.Override;
-  if (value > plc::kOverrideFull) {
-    // Not a percentage: not taken. The last valid value stays in force, the warning says why.
-    a_.channel_.warn(Warning::kOverrideNotAllowed);
-    return;
-  }
-  a_.channel_.clear_warning(Warning::kOverrideNotAllowed);
-  a_.job_.set_override(value);
-}
-
 double OnlineChange::override_level(double user_velocity, double reduced_velocity,
                                     uint32_t override_value) const noexcept {
   const double base =

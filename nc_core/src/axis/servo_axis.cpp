@@ -128,93 +128,95 @@ void ServoAxis::phase_monitors(AxisSnapshot& snapshot) noexcept {
 // --- AxisMonitoring ---
 
 void AxisMonitoring::check_enables() noexcept {
-  const bool enabled = a_.channel_.controller_enabled();
-  const bool lost = a_.enable_seen_ && !enabled;
-  a_.enable_seen_ = enabled;
-  if (a_.slave_count_ == 0) {  // no group to follow this axis: never case 2 (follows_by_hand())
-    GroupErrors(a_).end_by_hand();
-  } else if (GroupErrors(a_).update_by_hand()) {
+  AxisCore& a = a_;  // held in a register: no reload of a_ after each store
+  const bool enabled = a.channel_.controller_enabled();
+  const bool lost = a.enable_seen_ && !enabled;
+  a.enable_seen_ = enabled;
+  if (a.slave_count_ == 0) {  // no group to follow this axis: never case 2 (follows_by_hand())
+    GroupErrors(a).end_by_hand();
+  } else if (GroupErrors(a).update_by_hand()) {
     return;  // C8 case 2: the group follows this master pushed by hand
   }
   if (!enabled) {
     // Losing the controller enable while a command runs is an axis error (enable_loss.cpp);
     // there is no ramp to run (the drive is off), so the job ends here and the set values follow
     // the actual position.
-    if (GroupErrors(a_).enable_loss_is_error(lost))
-      a_.raise_error(ErrorCode::kControllerEnableLost);
-    a_.job_.clear();
+    if (GroupErrors(a).enable_loss_is_error(lost)) a.raise_error(ErrorCode::kControllerEnableLost);
+    a.job_.clear();
     return;
   }
   // Feed enable removed in the direction of travel: the axis stops on its error ramp (also when
   // external setpoints move it; a coupled slave's error stops its group, see Kernel).
-  if ((a_.job_.is_motion() || a_.homing_.active() || a_.stack_.external().enabled() ||
-       a_.slave_link_.coupled) &&
-      !a_.channel_.has_error()) {
-    if (a_.set_.v > 0.0 && !a_.channel_.feed_enabled(1.0)) {
-      a_.raise_error(ErrorCode::kFeedEnablePlusMissing);
-    } else if (a_.set_.v < 0.0 && !a_.channel_.feed_enabled(-1.0)) {
-      a_.raise_error(ErrorCode::kFeedEnableMinusMissing);
+  if ((a.job_.is_motion() || a.homing_.active() || a.stack_.external().enabled() ||
+       a.slave_link_.coupled) &&
+      !a.channel_.has_error()) {
+    if (a.set_.v > 0.0 && !a.channel_.feed_enabled(1.0)) {
+      a.raise_error(ErrorCode::kFeedEnablePlusMissing);
+    } else if (a.set_.v < 0.0 && !a.channel_.feed_enabled(-1.0)) {
+      a.raise_error(ErrorCode::kFeedEnableMinusMissing);
     }
   }
 }
 
 void AxisMonitoring::run_monitors() noexcept {
-  const double actual = a_.drive_.measured_position();
-  const bool armed = a_.channel_.controller_enabled() && !a_.channel_.has_error();
-  if (a_.monitors_.following_error(a_.drive_command().p - actual, armed)) {
-    a_.raise_error(ErrorCode::kFollowingErrorPosition);
+  AxisCore& a = a_;  // held in a register: no reload of a_ after each store
+  const double actual = a.drive_.measured_position();
+  const bool armed = a.channel_.controller_enabled() && !a.channel_.has_error();
+  if (a.monitors_.following_error(a.drive_command().p - actual, armed)) {
+    a.raise_error(ErrorCode::kFollowingErrorPosition);
   }
   // Software limits during motion: the set position passes an enabled limit while it moves
   // outward. Moving back in from outside (seed 000 §2.1 note 5) is not an error.
-  const bool moving_on_its_own = a_.job_.active() && a_.job_.kind() != JobKind::kEmergencyStop;
-  if (!a_.channel_.has_error() && (moving_on_its_own || a_.slave_link_.coupled)) {
-    if (a_.set_.v > 0.0 && a_.monitors_.above_max(a_.set_.p)) {
-      a_.raise_error(ErrorCode::kSoftLimitMaxDuringMotion);
-    } else if (a_.set_.v < 0.0 && a_.monitors_.below_min(a_.set_.p)) {
-      a_.raise_error(ErrorCode::kSoftLimitMinDuringMotion);
+  const bool moving_on_its_own = a.job_.active() && a.job_.kind() != JobKind::kEmergencyStop;
+  if (!a.channel_.has_error() && (moving_on_its_own || a.slave_link_.coupled)) {
+    if (a.set_.v > 0.0 && a.monitors_.above_max(a.set_.p)) {
+      a.raise_error(ErrorCode::kSoftLimitMaxDuringMotion);
+    } else if (a.set_.v < 0.0 && a.monitors_.below_min(a.set_.p)) {
+      a.raise_error(ErrorCode::kSoftLimitMinDuringMotion);
     }
   }
   // The windows count only once set-value generation rests: the job has ended and the external
   // generator (seed 000 §2.6) is not feeding a motion (direction ±1), so a fed motion passing
   // through its target window is not "in target position".
   const bool settled =
-      a_.channel_.controller_enabled() && !a_.stack_.external().moving() &&
-      !a_.slave_link_.coupled && !a_.homing_.active() &&
-      (!a_.job_.active() || (a_.job_.kind() != JobKind::kVelocity && a_.job_.generation_ended()));
-  a_.monitors_.windows(actual - a_.drive_offset_, a_.target_, settled);  // in program coordinates
+      a.channel_.controller_enabled() && !a.stack_.external().moving() && !a.slave_link_.coupled &&
+      !a.homing_.active() &&
+      (!a.job_.active() || (a.job_.kind() != JobKind::kVelocity && a.job_.generation_ended()));
+  a.monitors_.windows(actual - a.drive_offset_, a.target_, settled);  // in program coordinates
 }
 
 void AxisMonitoring::finish_job() noexcept {
-  if (a_.homing_.finished()) {
-    a_.channel_.answer_current(CommandState::kDone);
-    a_.homing_.clear();
-    a_.target_ = a_.set_.p;  // where the homing stopped: the windows watch it from now on
+  AxisCore& a = a_;  // held in a register: no reload of a_ after each store
+  if (a.homing_.finished()) {
+    a.channel_.answer_current(CommandState::kDone);
+    a.homing_.clear();
+    a.target_ = a.set_.p;  // where the homing stopped: the windows watch it from now on
   }
-  switch (a_.job_.kind()) {
+  switch (a.job_.kind()) {
     case JobKind::kNone:
       break;
     case JobKind::kPosition:
       // Done = set-value generation ended and the target window reached (or switched off). A
       // pass (blending) is done when the waiting command takes over (command_buffer.cpp).
-      if (a_.job_.generation_ended() && !a_.job_.passing() && a_.monitors_.in_target_position()) {
-        a_.channel_.answer_current(CommandState::kDone);
-        a_.job_.clear();
+      if (a.job_.generation_ended() && !a.job_.passing() && a.monitors_.in_target_position()) {
+        a.channel_.answer_current(CommandState::kDone);
+        a.job_.clear();
       }
       break;
     case JobKind::kVelocity:
-      if (a_.job_.velocity_reached() && a_.channel_.cmd_state() == CommandState::kActive) {
-        a_.channel_.answer_current(CommandState::kReached);
+      if (a.job_.velocity_reached() && a.channel_.cmd_state() == CommandState::kActive) {
+        a.channel_.answer_current(CommandState::kReached);
       }
       break;
     case JobKind::kHalt:
     case JobKind::kStop:
-      if (a_.job_.generation_ended()) {
-        a_.channel_.answer_current(CommandState::kDone);
-        a_.job_.clear();
+      if (a.job_.generation_ended()) {
+        a.channel_.answer_current(CommandState::kDone);
+        a.job_.clear();
       }
       break;
     case JobKind::kEmergencyStop:
-      if (a_.job_.generation_ended()) a_.job_.clear();
+      if (a.job_.generation_ended()) a.job_.clear();
       break;
   }
 }
@@ -222,16 +224,17 @@ void AxisMonitoring::finish_job() noexcept {
 // --- AxisMotion ---
 
 void AxisMotion::generate_set_values(std::span<const AxisSnapshot> snapshots) noexcept {
-  a_.previous_set_position_ = a_.set_.p;
-  if (!a_.channel_.controller_enabled()) {
-    a_.set_jerk_ = 0.0;  // no generation: control_and_drive() makes the set position follow
-    a_.end_external_generation();  // seed 000 §2.6: the controller enable's edge switches it off
+  AxisCore& a = a_;  // held in a register: no reload of a_ after each store
+  a.previous_set_position_ = a.set_.p;
+  if (!a.channel_.controller_enabled()) {
+    a.set_jerk_ = 0.0;  // no generation: control_and_drive() makes the set position follow
+    a.end_external_generation();  // seed 000 §2.6: the controller enable's edge switches it off
     // A coupled slave follows again from where it stands when the enable returns; its
     // compensation ends with the enable (the offset taken anew includes what it did).
-    if (a_.slave_link_.coupled) {
-      a_.slave_link_.retake_offset = true;
-      if (a_.stack_.compensation().running() || a_.stack_.held() != 0.0) {
-        a_.fold_superpositions(CommandState::kAborted);
+    if (a.slave_link_.coupled) {
+      a.slave_link_.retake_offset = true;
+      if (a.stack_.compensation().running() || a.stack_.held() != 0.0) {
+        a.fold_superpositions(CommandState::kAborted);
       }
     }
     return;
@@ -239,89 +242,90 @@ void AxisMotion::generate_set_values(std::span<const AxisSnapshot> snapshots) no
   bool not_finite = false;
   bool too_large = false;
   bool absolute_ended = false;
-  switch (a_.source()) {
+  switch (a.source()) {
     case SetValueSource::kPtpJob:
-      a_.base_ = a_.job_.advance(a_.cycle_time_);
-      a_.set_jerk_ = a_.job_.jerk();
+      a.base_ = a.job_.advance(a.cycle_time_);
+      a.set_jerk_ = a.job_.jerk();
       break;
     case SetValueSource::kExternalAbsolute: {
       const ExternalSetpoint::Step step =
-          a_.stack_.external().take(a_.channel_.ref().PlcToNc, a_.cycle_time_);
-      a_.base_ = step.state;
-      a_.set_jerk_ = 0.0;
+          a.stack_.external().take(a.channel_.ref().PlcToNc, a.cycle_time_);
+      a.base_ = step.state;
+      a.set_jerk_ = 0.0;
       not_finite = step.not_finite;
       too_large = step.too_large;
       absolute_ended = step.finished;
       break;
     }
     case SetValueSource::kSlaveLink: {
-      const AxisSnapshot& master = snapshots[a_.slave_link_.master];
-      if (a_.slave_link_.cyclic) SlaveCoupling(a_).step_cyclic_factor(master);
-      a_.base_ = a_.slave_link_.sample(master, a_.set_.p);
-      a_.set_jerk_ = a_.slave_link_.factor * master.set_jerk;
+      const AxisSnapshot& master = snapshots[a.slave_link_.master];
+      if (a.slave_link_.cyclic) SlaveCoupling(a).step_cyclic_factor(master);
+      a.base_ = a.slave_link_.sample(master, a.set_.p);
+      a.set_jerk_ = a.slave_link_.factor * master.set_jerk;
       break;
     }
     case SetValueSource::kHomingJob:
-      AxisHoming(a_).run_homing();
+      AxisHoming(a).run_homing();
       break;
     case SetValueSource::kHold:
-      if (a_.stack_.moves_alone()) {
-        a_.base_.v = 0.0;  // the basic motion holds; a superposition may still move the axis
-        a_.base_.a = 0.0;
+      if (a.stack_.moves_alone()) {
+        a.base_.v = 0.0;  // the basic motion holds; a superposition may still move the axis
+        a.base_.a = 0.0;
       } else {
-        a_.base_ = KinematicState{a_.set_.p, 0.0, 0.0};  // the axis holds where it is
-        a_.stack_.drop_held();
+        a.base_ = KinematicState{a.set_.p, 0.0, 0.0};  // the axis holds where it is
+        a.stack_.drop_held();
       }
-      a_.set_jerk_ = 0.0;
+      a.set_jerk_ = 0.0;
       break;
   }
-  if (a_.stack_.empty()) {
+  if (a.stack_.empty()) {
     // The steady case: superimpose() would add the held ±0.0 and nothing else (the addition
     // kept for the sign of a zero). Without the stack there is no absolute packet either.
-    a_.set_ = KinematicState{a_.base_.p + a_.stack_.held(), a_.base_.v, a_.base_.a};
+    a.set_ = KinematicState{a.base_.p + a.stack_.held(), a.base_.v, a.base_.a};
     return;
   }
-  const BasicPath path = a_.basic_path();
+  const BasicPath path = a.basic_path();
   SuperpositionStack::Basic basic;
-  basic.state = a_.base_;
+  basic.state = a.base_;
   basic.path_running = path.running;
   basic.has_target = path.has_target;
   basic.target = path.target;
   const SuperpositionStack::Result r =
-      a_.stack_.superimpose(basic, a_.channel_.ref().PlcToNc, a_.channel_, a_.cycle_time_);
-  a_.set_ = r.set;
-  if (r.target_moved) a_.target_ = r.target;
+      a.stack_.superimpose(basic, a.channel_.ref().PlcToNc, a.channel_, a.cycle_time_);
+  a.set_ = r.set;
+  if (r.target_moved) a.target_ = r.target;
   if (absolute_ended) {
-    a_.base_ = KinematicState{a_.set_.p, 0.0, 0.0};  // the last packet taken: the axis holds there
-    a_.stack_.drop_held();
+    a.base_ = KinematicState{a.set_.p, 0.0, 0.0};  // the last packet taken: the axis holds there
+    a.stack_.drop_held();
   }
   // A packet with NaN or inf is not taken; the axis must not run on it (SPEC B8).
-  if (not_finite || r.not_finite) a_.raise_error(ErrorCode::kParameterNotFinite);
+  if (not_finite || r.not_finite) a.raise_error(ErrorCode::kParameterNotFinite);
   // A finite packet out of range (external_setpoint.hpp) is not taken either: 0x4359.
-  if (too_large || r.too_large) a_.raise_error(ErrorCode::kSetVelocityNotAllowed);
+  if (too_large || r.too_large) a.raise_error(ErrorCode::kSetVelocityNotAllowed);
 }
 
 void AxisMotion::control_and_drive() noexcept {
-  if (a_.encoder_) {
+  AxisCore& a = a_;  // held in a register: no reload of a_ after each store
+  if (a.encoder_) {
     // Encoder / virtual axis: no controller, the actual values are the set values.
-    const KinematicState& command = a_.drive_command();
-    a_.drive_.follow(command.p, command.v, command.a);
+    const KinematicState& command = a.drive_command();
+    a.drive_.follow(command.p, command.v, command.a);
     return;
   }
-  if (!a_.channel_.controller_enabled()) {
+  if (!a.channel_.controller_enabled()) {
     // TwinCAT: without controller enable the drive is off and the set position follows the
     // actual position, so there is no following error to jump at when the enable returns.
-    a_.drive_.step(a_.hand_velocity_, a_.hand_velocity_ != 0.0);  // Kernel::push_by_hand, else off
-    a_.drive_command_ = KinematicState{a_.drive_.measured_position(), 0.0, 0.0};
-    a_.set_ = KinematicState{a_.drive_.measured_position() - a_.drive_offset_, 0.0, 0.0};
-    a_.target_ = a_.set_.p;
+    a.drive_.step(a.hand_velocity_, a.hand_velocity_ != 0.0);  // Kernel::push_by_hand, else off
+    a.drive_command_ = KinematicState{a.drive_.measured_position(), 0.0, 0.0};
+    a.set_ = KinematicState{a.drive_.measured_position() - a.drive_offset_, 0.0, 0.0};
+    a.target_ = a.set_.p;
     return;
   }
   const double previous =
-      a_.drive_command_given_ ? a_.previous_drive_position_ : a_.previous_set_position_;
-  const double command = a_.controller_.command(previous, a_.drive_command().p,
-                                                a_.drive_.measured_position(), a_.cycle_time_);
-  a_.drive_.step(command, true);
+      a.drive_command_given_ ? a.previous_drive_position_ : a.previous_set_position_;
+  const double command = a.controller_.command(previous, a.drive_command().p,
+                                               a.drive_.measured_position(), a.cycle_time_);
+  a.drive_.step(command, true);
 }
 
 }  // namespace nc::detail
