@@ -25,7 +25,7 @@ class AxisCommands : public AxisPart {
   // The commands posted since the last cycle, in order (nothing posted, the steady case: inline,
   // no call).
   void handle_commands(CouplingPort& port) noexcept {
-    if (a_.channel_.ref().Mailbox.pending() != 0) drain(port);
+    if (s_.channel_.ref().Mailbox.pending() != 0) drain(port);
   }
   // Acts on a command now (BufferMode not looked at); the error code of a refusal.
   ErrorCode handle_now(const plc::Command& command, CouplingPort& port) noexcept;

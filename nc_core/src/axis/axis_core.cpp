@@ -58,8 +58,9 @@ void AxisCore::raise_error(ErrorCode code, bool own) noexcept {
                plc::to_id(code));  // a waiting command fails with the axis
   // The compensation fails with the axis; external generation is switched off (seed 000 §2.6).
   fold_superpositions(CommandState::kError, code);
-  if (own)
+  if (own) {
     GroupErrors(*this).begin_error_propagation();  // C7: DELAYED, a slave leaves its master here
+  }
   // A coupled slave's motion is its master's: it goes on following (group reactions: SPEC C7).
   if (slave_link_.coupled) return;
   if (!channel_.controller_enabled()) {

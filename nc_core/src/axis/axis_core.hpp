@@ -29,6 +29,7 @@
 #include "homing/homing_job.hpp"
 #include "nc_core/axis_config.hpp"
 #include "nc_core/profile.hpp"
+#include "part_of.hpp"
 #include "plc_interface/two_speed.hpp"
 #include "two_speed/two_speed_axis.hpp"
 
@@ -184,14 +185,7 @@ inline SetValueSource AxisCore::source() const noexcept {
   return SetValueSource::kHold;
 }
 
-// The base of the parts of a servo axis (axis_commands.hpp, online_change.hpp, …): a view on one
-// axis's AxisCore, made for one call and owning nothing.
-class AxisPart {
- public:
-  explicit AxisPart(AxisCore& axis) noexcept : a_(axis) {}
-
- protected:
-  AxisCore& a_;
-};
+// The base of the parts of a servo axis (axis_commands.hpp, online_change.hpp, …).
+using AxisPart = PartOf<AxisCore>;
 
 }  // namespace nc::detail

@@ -39,7 +39,7 @@ ErrorCode check_dynamic(double value, ErrorCode code) noexcept {
 }  // namespace
 
 void AxisCommands::drain(CouplingPort& port) noexcept {
-  plc::CommandMailbox& mailbox = a_.channel_.ref().Mailbox;
+  plc::CommandMailbox& mailbox = s_.channel_.ref().Mailbox;
   plc::Command command;
   while (mailbox.take(command))
     handle(command, port);
@@ -49,20 +49,20 @@ void AxisCommands::handle(const plc::Command& command, CouplingPort& port) noexc
   ErrorCode code = ErrorCode::kNone;
   // An HLI target's program feeds its drive only through its list (SPEC D3): external setpoints
   // are refused there as on a coupled slave.
-  if (((a_.slave_link_.coupled || a_.slave_link_.detached) &&
+  if (((s_.slave_link_.coupled || s_.slave_link_.detached) &&
        SlaveCoupling::refused_while_coupled(command.type)) ||
-      (a_.hli_target() && command.type == CommandType::kExtSetPointGenEnable)) {
-    a_.channel_.answer(command.number, CommandState::kError,
+      (s_.hli_target() && command.type == CommandType::kExtSetPointGenEnable)) {
+    s_.channel_.answer(command.number, CommandState::kError,
                        plc::to_id(ErrorCode::kFunctionNotAllowed));
     return;
   }
   if (command.buffer_mode != plc::MC_Aborting && bufferable(command.type)) {
-    code = BufferedCommands(a_).buffer_command(command, port);  // command_buffer.cpp
+    code = BufferedCommands(s_).buffer_command(command, port);  // command_buffer.cpp
   } else {
     code = handle_now(command, port);
   }
   if (code != ErrorCode::kNone) {
-    a_.channel_.answer(command.number, CommandState::kError, plc::to_id(code));
+    s_.channel_.answer(command.number, CommandState::kError, plc::to_id(code));
   }
 }
 
@@ -80,50 +80,50 @@ ErrorCode AxisCommands::handle_now(const plc::Command& command, CouplingPort& po
       code = start_velocity(command);
       break;
     case CommandType::kNewPos:
-      code = OnlineChange(a_).new_position(command);
+      code = OnlineChange(s_).new_position(command);
       break;
     case CommandType::kNewPosAndVelo:
-      code = OnlineChange(a_).new_position_and_velocity(command);
+      code = OnlineChange(s_).new_position_and_velocity(command);
       break;
     case CommandType::kHalt:
     case CommandType::kStop:
       code = start_halt_or_stop(command);
       break;
     case CommandType::kMoveSuperImposed:
-      code = SuperpositionCommands(a_).start_compensation(command);
+      code = SuperpositionCommands(s_).start_compensation(command);
       break;
     case CommandType::kAbortSuperposition:
-      code = SuperpositionCommands(a_).stop_compensation(command);
+      code = SuperpositionCommands(s_).stop_compensation(command);
       break;
     case CommandType::kExtSetPointGenEnable:
-      code = SuperpositionCommands(a_).enable_external(command);
+      code = SuperpositionCommands(s_).enable_external(command);
       break;
     case CommandType::kExtSetPointGenDisable:
-      code = SuperpositionCommands(a_).disable_external(command);
+      code = SuperpositionCommands(s_).disable_external(command);
       break;
     case CommandType::kGearIn:
-      code = SlaveCoupling(a_).gear_in(command, port);
+      code = SlaveCoupling(s_).gear_in(command, port);
       break;
     case CommandType::kGearInDyn:
-      code = SlaveCoupling(a_).gear_in_dyn(command, port);
+      code = SlaveCoupling(s_).gear_in_dyn(command, port);
       break;
     case CommandType::kGearOut:
-      code = SlaveCoupling(a_).gear_out(command, port);
+      code = SlaveCoupling(s_).gear_out(command, port);
       break;
     case CommandType::kHome:
-      code = AxisHoming(a_).start_home(command);
+      code = AxisHoming(s_).start_home(command);
       break;
     case CommandType::kReset:
       // Answered at once and without taking CmdNo: a reset is not a job. It also cancels an
       // MC_Stop lock (Tc2_MC2: "the locking of the axis is canceled with an MC_Reset").
-      GroupErrors(a_).reset_error();
-      a_.locked_ = false;
-      a_.end_external_generation();  // seed 000 §2.6: an axis reset switches it off
-      a_.channel_.answer(command.number, CommandState::kDone);
+      GroupErrors(s_).reset_error();
+      s_.locked_ = false;
+      s_.end_external_generation();  // seed 000 §2.6: an axis reset switches it off
+      s_.channel_.answer(command.number, CommandState::kDone);
       break;
     case CommandType::kStopRelease:
-      a_.locked_ = false;
-      a_.channel_.answer(command.number, CommandState::kDone);
+      s_.locked_ = false;
+      s_.channel_.answer(command.number, CommandState::kDone);
       break;
     default:
       code = ErrorCode::kUnknownCommand;
@@ -139,7 +139,7 @@ ErrorCode AxisCommands::check_dynamics(const plc::Command& command, Limits& limi
   }
   // Table 2 of seed 000 §2.1: V > 0, V <= Vmax, and not above the reference velocity.
   if (command.velocity <= 0.0) return ErrorCode::kVelocityNotPositive;
-  if (command.velocity > a_.config_.max_velocity || command.velocity > a_.config_.ref_velocity) {
+  if (command.velocity > s_.config_.max_velocity || command.velocity > s_.config_.ref_velocity) {
     return ErrorCode::kVelocityNotAllowed;
   }
   ErrorCode code = check_dynamic(command.acceleration, ErrorCode::kAccelerationNotAllowed);
@@ -149,19 +149,19 @@ ErrorCode AxisCommands::check_dynamics(const plc::Command& command, Limits& limi
   if (code == ErrorCode::kNone) code = check_dynamic(command.jerk, ErrorCode::kJerkNotAllowed);
   if (code != ErrorCode::kNone) return code;
   limits.velocity = command.velocity;
-  limits.acceleration = command.acceleration > 0.0 ? command.acceleration : a_.config_.acceleration;
-  limits.deceleration = command.deceleration > 0.0 ? command.deceleration : a_.config_.deceleration;
-  limits.jerk = command.jerk > 0.0 ? command.jerk : a_.config_.jerk;
+  limits.acceleration = command.acceleration > 0.0 ? command.acceleration : s_.config_.acceleration;
+  limits.deceleration = command.deceleration > 0.0 ? command.deceleration : s_.config_.deceleration;
+  limits.jerk = command.jerk > 0.0 ? command.jerk : s_.config_.jerk;
   return ErrorCode::kNone;
 }
 
 ErrorCode AxisCommands::check_start(const plc::Command& command, bool has_position,
                                     Limits& limits) const noexcept {
-  if (a_.channel_.has_error()) return ErrorCode::kAxisInErrorState;
-  if (a_.locked_) return ErrorCode::kMotionCommandsLocked;
+  if (s_.channel_.has_error()) return ErrorCode::kAxisInErrorState;
+  if (s_.locked_) return ErrorCode::kMotionCommandsLocked;
   // Seed 000 §2.6: external generation may join a running PTP motion (relative), "the opposite
   // case is not permitted".
-  if (a_.stack_.external().enabled()) return ErrorCode::kStartTypeNotAllowed;
+  if (s_.stack_.external().enabled()) return ErrorCode::kStartTypeNotAllowed;
   if (!known_buffer_mode(command.buffer_mode)) return ErrorCode::kBufferModeNotSupported;
   if (has_position && !std::isfinite(command.position)) return ErrorCode::kPositionNotFinite;
   return check_dynamics(command, limits);
@@ -173,7 +173,7 @@ ErrorCode AxisCommands::start_position(const plc::Command& command) noexcept {
     return code;
   }
   const double target =
-      command.type == CommandType::kMoveAbsolute ? command.position : a_.set_.p + command.position;
+      command.type == CommandType::kMoveAbsolute ? command.position : s_.set_.p + command.position;
   return start_to_target(command.number, target, limits);
 }
 
@@ -183,21 +183,21 @@ ErrorCode AxisCommands::start_to_target(uint16_t number, double target,
   if (const ErrorCode code = check_target(target); code != ErrorCode::kNone) return code;
   // Seed 000 §2.1 notes 4 and 5: the target must lie inside the software limits; where the axis
   // starts from does not matter, so a start from outside back into the range is allowed.
-  if (a_.monitors_.below_min(target) || a_.monitors_.above_max(target)) {
+  if (s_.monitors_.below_min(target) || s_.monitors_.above_max(target)) {
     return ErrorCode::kTargetPositionNotAllowed;
   }
-  const double distance = target - a_.set_.p;
-  if (!a_.channel_.controller_enabled() || !a_.channel_.feed_enabled(distance)) {
+  const double distance = target - s_.set_.p;
+  if (!s_.channel_.controller_enabled() || !s_.channel_.feed_enabled(distance)) {
     return ErrorCode::kNoControllerOrFeedEnable;
   }
-  const bool at_rest = a_.set_.v == 0.0 && a_.set_.a == 0.0;
-  if (at_rest && (distance == 0.0 || std::abs(distance) < a_.config_.encoder_increment)) {
+  const bool at_rest = s_.set_.v == 0.0 && s_.set_.a == 0.0;
+  if (at_rest && (distance == 0.0 || std::abs(distance) < s_.config_.encoder_increment)) {
     // Seed 000 §2.1: no start for a path shorter than one encoder increment — a warning.
-    a_.channel_.warn(Warning::kMovementSmallerThanIncrement);
-    a_.channel_.answer(number, CommandState::kDone);
+    s_.channel_.warn(Warning::kMovementSmallerThanIncrement);
+    s_.channel_.answer(number, CommandState::kDone);
     return ErrorCode::kNone;
   }
-  return OnlineChange(a_).start_positioning(number, target,
+  return OnlineChange(s_).start_positioning(number, target,
                                             limits);  // override.cpp: the override applies
 }
 
@@ -208,26 +208,28 @@ ErrorCode AxisCommands::start_velocity(const plc::Command& command) noexcept {
   }
   // MC_Current_Direction: the direction the axis moves in; at standstill there is none.
   const double direction = command.direction == plc::MC_Current_Direction
-                               ? a_.current_direction()
+                               ? s_.current_direction()
                                : velocity_direction(command.direction);
   if (direction == 0.0) return ErrorCode::kDirectionInvalid;
   // Continuous motion has no target: refuse it only when it would run further out from (or
   // straight through) an enabled software limit it already stands on or beyond.
-  if (direction > 0.0 && a_.monitors_.at_or_above_max(a_.set_.p))
+  if (direction > 0.0 && s_.monitors_.at_or_above_max(s_.set_.p)) {
     return ErrorCode::kSoftLimitMaxAtStart;
-  if (direction < 0.0 && a_.monitors_.at_or_below_min(a_.set_.p))
+  }
+  if (direction < 0.0 && s_.monitors_.at_or_below_min(s_.set_.p)) {
     return ErrorCode::kSoftLimitMinAtStart;
-  if (!a_.channel_.controller_enabled() || !a_.channel_.feed_enabled(direction)) {
+  }
+  if (!s_.channel_.controller_enabled() || !s_.channel_.feed_enabled(direction)) {
     return ErrorCode::kNoControllerOrFeedEnable;
   }
-  return OnlineChange(a_).start_continuous(command.number, direction * limits.velocity, limits);
+  return OnlineChange(s_).start_continuous(command.number, direction * limits.velocity, limits);
 }
 
 ErrorCode AxisCommands::check_halt_or_stop(const plc::Command& command) const noexcept {
   const bool stop = command.type == CommandType::kStop;
-  if (a_.channel_.has_error()) return ErrorCode::kAxisInErrorState;
+  if (s_.channel_.has_error()) return ErrorCode::kAxisInErrorState;
   // A stop has priority and may replace a stop; a halt is a motion command and is locked out.
-  if (!stop && a_.locked_) return ErrorCode::kMotionCommandsLocked;
+  if (!stop && s_.locked_) return ErrorCode::kMotionCommandsLocked;
   if (!stop && !known_buffer_mode(command.buffer_mode)) {
     return ErrorCode::kBufferModeNotSupported;
   }
@@ -243,7 +245,7 @@ ErrorCode AxisCommands::check_halt_or_stop(const plc::Command& command) const no
       code != ErrorCode::kNone) {
     return code;
   }
-  if (!a_.channel_.controller_enabled()) return ErrorCode::kNoControllerOrFeedEnable;
+  if (!s_.channel_.controller_enabled()) return ErrorCode::kNoControllerOrFeedEnable;
   return ErrorCode::kNone;
 }
 
@@ -253,29 +255,29 @@ ErrorCode AxisCommands::start_halt_or_stop(const plc::Command& command) noexcept
 
   // 0 = the running motion's deceleration and jerk (a homing's too, K8), or the axis default
   // when nothing runs.
-  const MasterJob& running = a_.running_motion();
+  const MasterJob& running = s_.running_motion();
   const bool motion =
       running.is_motion() || running.kind() == JobKind::kHalt || running.kind() == JobKind::kStop;
-  Limits limits{motion ? running.limits().velocity : a_.config_.max_velocity,
-                motion ? running.limits().acceleration : a_.config_.acceleration,
-                motion ? running.limits().deceleration : a_.config_.deceleration,
-                motion ? running.limits().jerk : a_.config_.jerk};
+  Limits limits{motion ? running.limits().velocity : s_.config_.max_velocity,
+                motion ? running.limits().acceleration : s_.config_.acceleration,
+                motion ? running.limits().deceleration : s_.config_.deceleration,
+                motion ? running.limits().jerk : s_.config_.jerk};
   // Seed 000 §2.2 "Emergency stop": the command's deceleration and jerk replace the running
   // motion's only when both are larger, and never in the brake phase (the braking that runs goes
   // on: a stop with the running motion's values continues it).
-  const bool braking = running.in_brake_phase(a_.cycle_time_);
+  const bool braking = running.in_brake_phase(s_.cycle_time_);
   if (!braking && command.deceleration > limits.deceleration && command.jerk > limits.jerk) {
     limits.deceleration = command.deceleration;
     limits.jerk = command.jerk;
   }
   // Without the running compensation: it gets its compensation stop on top (seed 000 §2.5).
-  a_.scratch_ = plan_stop(a_.stack_.stop_start_state(a_.set_), limits.deceleration, limits.jerk);
-  if (!a_.scratch_.ok()) return a_.scratch_.error();
-  a_.accept(stop ? JobKind::kStop : JobKind::kHalt, command.number, a_.scratch_,
-            a_.scratch_.final_state().p, 0.0, limits);
-  if (braking) a_.job_.mark_brake_phase();
-  if (stop) a_.locked_ = true;
-  a_.has_been_stopped_ = true;
+  s_.scratch_ = plan_stop(s_.stack_.stop_start_state(s_.set_), limits.deceleration, limits.jerk);
+  if (!s_.scratch_.ok()) return s_.scratch_.error();
+  s_.accept(stop ? JobKind::kStop : JobKind::kHalt, command.number, s_.scratch_,
+            s_.scratch_.final_state().p, 0.0, limits);
+  if (braking) s_.job_.mark_brake_phase();
+  if (stop) s_.locked_ = true;
+  s_.has_been_stopped_ = true;
   return ErrorCode::kNone;
 }
 

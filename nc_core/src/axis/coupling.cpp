@@ -16,8 +16,8 @@ using plc::CommandState;
 using plc::CommandType;
 
 bool SlaveCoupling::at_rest_for_coupling() const noexcept {
-  return !a_.job_.active() && !a_.homing_.active() && a_.set_.v == 0.0 && a_.set_.a == 0.0 &&
-         !a_.stack_.compensation().running() && !a_.stack_.external().enabled();
+  return !s_.job_.active() && !s_.homing_.active() && s_.set_.v == 0.0 && s_.set_.a == 0.0 &&
+         !s_.stack_.compensation().running() && !s_.stack_.external().enabled();
 }
 
 bool SlaveCoupling::refused_while_coupled(CommandType type) noexcept {
@@ -50,8 +50,8 @@ ErrorCode SlaveCoupling::check_gear_ratio(double ratio) noexcept {
 
 ErrorCode SlaveCoupling::check_gear_master(const plc::Command& command,
                                            CouplingPort& port) const noexcept {
-  if (a_.slave_link_.detached) return ErrorCode::kFunctionNotAllowed;  // C7: MC_GearOut first
-  if (a_.config_.kind == AxisKind::kEncoder) return ErrorCode::kAxisKindNotAllowed;
+  if (s_.slave_link_.detached) return ErrorCode::kFunctionNotAllowed;  // C7: MC_GearOut first
+  if (s_.config_.kind == AxisKind::kEncoder) return ErrorCode::kAxisKindNotAllowed;
   if (command.other_axis < 0 || static_cast<std::size_t>(command.other_axis) >= port.axes.size()) {
     return ErrorCode::kInvalidAxisReference;
   }
@@ -64,10 +64,10 @@ ErrorCode SlaveCoupling::check_gear_master(const plc::Command& command,
 
 ErrorCode SlaveCoupling::check_new_coupling(uint32_t master_index,
                                             CouplingPort& port) const noexcept {
-  if (port.graph.would_loop(a_.index_, master_index)) return ErrorCode::kCouplingLoop;
-  if (a_.channel_.has_error()) return ErrorCode::kAxisInErrorState;
-  if (a_.locked_) return ErrorCode::kMotionCommandsLocked;
-  if (!a_.channel_.controller_enabled()) return ErrorCode::kSlaveNoControllerOrFeedEnable;
+  if (port.graph.would_loop(s_.index_, master_index)) return ErrorCode::kCouplingLoop;
+  if (s_.channel_.has_error()) return ErrorCode::kAxisInErrorState;
+  if (s_.locked_) return ErrorCode::kMotionCommandsLocked;
+  if (!s_.channel_.controller_enabled()) return ErrorCode::kSlaveNoControllerOrFeedEnable;
   if (!at_rest_for_coupling() ||
       !SlaveCoupling(port.axes[master_index]->core()).at_rest_for_coupling()) {
     return ErrorCode::kBusyWhileCoupling;
@@ -77,15 +77,15 @@ ErrorCode SlaveCoupling::check_new_coupling(uint32_t master_index,
 
 bool SlaveCoupling::couple_new(const plc::Command& command, uint32_t master_index,
                                CouplingPort& port) noexcept {
-  if (!port.graph.couple(a_.index_, master_index)) return false;  // not reached
+  if (!port.graph.couple(s_.index_, master_index)) return false;  // not reached
   AxisCore& master = port.axes[master_index]->core();
   ++master.slave_count_;
-  const uint16_t running = a_.job_.active() ? a_.job_.number() : 0;
-  a_.slave_link_.couple(master_index, command.number, command.ratio, a_.set_.p, master.set_.p);
-  // A held offset of a compensation that ended in the last cycle is in a_.set_.p, so in the offset.
-  a_.stack_.drop_held();
-  a_.channel_.take_over(command.number, running);
-  a_.monitors_.reset_windows();
+  const uint16_t running = s_.job_.active() ? s_.job_.number() : 0;
+  s_.slave_link_.couple(master_index, command.number, command.ratio, s_.set_.p, master.set_.p);
+  // A held offset of a compensation that ended in the last cycle is in s_.set_.p, so in the offset.
+  s_.stack_.drop_held();
+  s_.channel_.take_over(command.number, running);
+  s_.monitors_.reset_windows();
   return true;
 }
 
@@ -98,21 +98,21 @@ ErrorCode SlaveCoupling::gear_in(const plc::Command& command, CouplingPort& port
   }
   const auto master_index = static_cast<uint32_t>(command.other_axis);
   AxisCore& master = port.axes[master_index]->core();
-  if (a_.slave_link_.coupled) {
+  if (s_.slave_link_.coupled) {
     // A new rising edge for the same slave and master: the factor changes at once with the
     // slave's position continuous (SPEC C2). Another master needs MC_GearOut first.
-    if (master_index != a_.slave_link_.master) return ErrorCode::kFunctionNotAllowed;
-    a_.channel_.take_over(command.number, a_.slave_link_.command);  // the former instance: kAborted
+    if (master_index != s_.slave_link_.master) return ErrorCode::kFunctionNotAllowed;
+    s_.channel_.take_over(command.number, s_.slave_link_.command);  // the former instance: kAborted
     // From the basic set position: a compensation of the slave (C5) goes on on top of it.
-    a_.slave_link_.couple(master_index, command.number, command.ratio, a_.base_.p, master.set_.p);
-    a_.channel_.answer_current(CommandState::kReached);
+    s_.slave_link_.couple(master_index, command.number, command.ratio, s_.base_.p, master.set_.p);
+    s_.channel_.answer_current(CommandState::kReached);
     return ErrorCode::kNone;
   }
   if (const ErrorCode code = check_new_coupling(master_index, port); code != ErrorCode::kNone) {
     return code;
   }
   if (!couple_new(command, master_index, port)) return ErrorCode::kCouplingLoop;
-  a_.channel_.answer_current(CommandState::kReached);  // InGear at once: the coupling is logical
+  s_.channel_.answer_current(CommandState::kReached);  // InGear at once: the coupling is logical
   return ErrorCode::kNone;
 }
 
@@ -123,7 +123,7 @@ bool SlaveCoupling::decoupling_chain(CouplingPort& port, DecouplingChain& chain,
   // compensation's share of the velocity at decoupling (seed 000 §3.2.4 note 5: its velocity is
   // kept, it never completes). Collected slave first, applied head first.
   DecouplingChain up;
-  const AxisCore* axis = &a_;
+  const AxisCore* axis = &s_;
   while (true) {
     const KinematicState& base = axis->base_;
     const KinematicState& set = axis->set_;
@@ -147,52 +147,52 @@ bool SlaveCoupling::decoupling_chain(CouplingPort& port, DecouplingChain& chain,
 }
 
 ErrorCode SlaveCoupling::gear_out(const plc::Command& command, CouplingPort& port) noexcept {
-  if (a_.slave_link_.detached) return release_detached(command, port);  // C7 DELAYED
-  if (!a_.slave_link_.coupled) return ErrorCode::kDecouplingNotAllowed;
+  if (s_.slave_link_.detached) return release_detached(command, port);  // C7 DELAYED
+  if (!s_.slave_link_.coupled) return ErrorCode::kDecouplingNotAllowed;
   // Online when the slave moves (its master's velocity is not 0); at override 0 or at rest it
   // decouples offline (seed 000 §3.2.3).
-  const bool online = a_.set_.v != 0.0 || a_.set_.a != 0.0;
+  const bool online = s_.set_.v != 0.0 || s_.set_.a != 0.0;
   DecouplingChain chain;
   const AxisCore* head = nullptr;
   if (online && !decoupling_chain(port, chain, head)) return ErrorCode::kDecouplingNotAllowed;
-  port.graph.decouple(a_.index_);
-  AxisCore& master = port.axes[a_.slave_link_.master]->core();
+  port.graph.decouple(s_.index_);
+  AxisCore& master = port.axes[s_.slave_link_.master]->core();
   --master.slave_count_;
-  a_.slave_link_.coupled = false;
+  s_.slave_link_.coupled = false;
   // The coupling command has ended.
-  if (a_.channel_.runs(a_.slave_link_.command)) a_.channel_.answer_current(CommandState::kDone);
-  a_.monitors_.reset_windows();
-  a_.channel_.answer(command.number, CommandState::kDone);
+  if (s_.channel_.runs(s_.slave_link_.command)) s_.channel_.answer_current(CommandState::kDone);
+  s_.monitors_.reset_windows();
+  s_.channel_.answer(command.number, CommandState::kDone);
   if (!online) {
     // The slave becomes a PTP master holding its set position.
-    a_.base_ = KinematicState{a_.set_.p, 0.0, 0.0};
-    a_.target_ = a_.set_.p;
+    s_.base_ = KinematicState{s_.set_.p, 0.0, 0.0};
+    s_.target_ = s_.set_.p;
     return ErrorCode::kNone;
   }
   // The slave becomes a master that goes on with the head's plan as it stands now, transformed:
   // override 100 % = |last factor| × the head's target velocity; what comes next (stop, new end
   // position, override) uses the axis's own dynamics. The job has no command number of its own.
   const double scale = std::abs(chain.total_factor());
-  const Limits own{scale * head->job_.user_velocity(), a_.config_.acceleration,
-                   a_.config_.deceleration, a_.config_.jerk};
-  const uint32_t override_value = a_.job_.override_value();
+  const Limits own{scale * head->job_.user_velocity(), s_.config_.acceleration,
+                   s_.config_.deceleration, s_.config_.jerk};
+  const uint32_t override_value = s_.job_.override_value();
   // The slave's own compensation is a level of the chain now: it never completes.
-  a_.fold_superpositions(CommandState::kAborted);
-  a_.job_ = head->job_;
-  a_.job_.follow(chain, 0, own, override_value);
-  a_.base_ = a_.set_;
-  if (a_.job_.kind() == JobKind::kEmergencyStop) a_.job_.set_kind(JobKind::kHalt);  // no error here
-  a_.target_ = a_.job_.kind() == JobKind::kVelocity ? a_.set_.p : a_.job_.target();
+  s_.fold_superpositions(CommandState::kAborted);
+  s_.job_ = head->job_;
+  s_.job_.follow(chain, 0, own, override_value);
+  s_.base_ = s_.set_;
+  if (s_.job_.kind() == JobKind::kEmergencyStop) s_.job_.set_kind(JobKind::kHalt);  // no error here
+  s_.target_ = s_.job_.kind() == JobKind::kVelocity ? s_.set_.p : s_.job_.target();
   return ErrorCode::kNone;
 }
 
 ErrorCode SlaveCoupling::release_detached(const plc::Command& command,
                                           CouplingPort& port) noexcept {
-  port.graph.decouple(a_.index_);
-  --port.axes[a_.slave_link_.master]->core().slave_count_;
-  a_.slave_link_.detached = false;
-  if (a_.channel_.runs(a_.slave_link_.command)) a_.channel_.answer_current(CommandState::kDone);
-  a_.channel_.answer(command.number, CommandState::kDone);
+  port.graph.decouple(s_.index_);
+  --port.axes[s_.slave_link_.master]->core().slave_count_;
+  s_.slave_link_.detached = false;
+  if (s_.channel_.runs(s_.slave_link_.command)) s_.channel_.answer_current(CommandState::kDone);
+  s_.channel_.answer(command.number, CommandState::kDone);
   return ErrorCode::kNone;
 }
 

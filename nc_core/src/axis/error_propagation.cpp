@@ -12,27 +12,28 @@ namespace nc::detail {
 using plc::CommandState;
 
 void GroupErrors::begin_error_propagation() noexcept {
-  const bool in_group = a_.slave_link_.coupled || a_.slave_link_.detached || a_.slave_count_ > 0;
-  const bool delayed = a_.config_.error_propagation_mode == ErrorPropagation::kDelayed &&
-                       in_group && a_.config_.kind != AxisKind::kTwoSpeed;
+  const bool in_group = s_.slave_link_.coupled || s_.slave_link_.detached || s_.slave_count_ > 0;
+  const bool delayed = s_.config_.error_propagation_mode == ErrorPropagation::kDelayed &&
+                       in_group && s_.config_.kind != AxisKind::kTwoSpeed;
   const uint64_t cycles =
-      delayed ? delay_cycles(a_.config_.error_propagation_delay, a_.cycle_time_) : uint64_t{0};
-  a_.propagation_.start(cycles);
-  if (cycles == 0 || !a_.slave_link_.coupled) return;
+      delayed ? delay_cycles(s_.config_.error_propagation_delay, s_.cycle_time_) : uint64_t{0};
+  s_.propagation_.start(cycles);
+  if (cycles == 0 || !s_.slave_link_.coupled) return;
   // The local reaction of a slave: it leaves its master's coupling and stops on its own
   // emergency ramp (raise_error() goes on as for a master); its own slaves keep following it.
-  a_.slave_link_.coupled = false;
-  a_.slave_link_.detached = true;
+  s_.slave_link_.coupled = false;
+  s_.slave_link_.detached = true;
 }
 
 bool GroupErrors::follows_by_hand() const noexcept {
   // Only the head of a group: a master that is no slave (nor a slave that left on an error).
   // (No slaves first: that is the steady cycle's answer.)
-  if (a_.slave_count_ == 0 || a_.slave_link_.coupled || a_.slave_link_.detached) return false;
-  if (!a_.config_.couple_slave_to_actual_values || a_.config_.kind != AxisKind::kContinuous)
+  if (s_.slave_count_ == 0 || s_.slave_link_.coupled || s_.slave_link_.detached) return false;
+  if (!s_.config_.couple_slave_to_actual_values || s_.config_.kind != AxisKind::kContinuous) {
     return false;
-  if (a_.channel_.controller_enabled() || a_.channel_.has_error()) return false;
-  return a_.by_hand_ || a_.group_ready_;
+  }
+  if (s_.channel_.controller_enabled() || s_.channel_.has_error()) return false;
+  return s_.by_hand_ || s_.group_ready_;
 }
 
 bool GroupErrors::update_by_hand() noexcept {
@@ -40,64 +41,64 @@ bool GroupErrors::update_by_hand() noexcept {
     end_by_hand();
     return false;
   }
-  if (!a_.by_hand_) {
-    a_.by_hand_ = true;
+  if (!s_.by_hand_) {
+    s_.by_hand_ = true;
     // The master's own command ends without an error: the group follows its actual values now.
-    if (a_.job_.active() && a_.channel_.runs(a_.job_.number())) {
-      a_.channel_.answer_current(CommandState::kAborted);
+    if (s_.job_.active() && s_.channel_.runs(s_.job_.number())) {
+      s_.channel_.answer_current(CommandState::kAborted);
     }
-    a_.job_.clear();
-    a_.buffer_.drop(a_.channel_, CommandState::kAborted);
+    s_.job_.clear();
+    s_.buffer_.drop(s_.channel_, CommandState::kAborted);
   }
   return true;
 }
 
 bool GroupErrors::drives_slaves_by_actual() const noexcept {
-  if (a_.slave_count_ == 0 || !a_.config_.couple_slave_to_actual_values) return false;
-  if (a_.config_.kind == AxisKind::kTwoSpeed) return false;
-  if (a_.by_hand_) return true;  // case 2
+  if (s_.slave_count_ == 0 || !s_.config_.couple_slave_to_actual_values) return false;
+  if (s_.config_.kind == AxisKind::kTwoSpeed) return false;
+  if (s_.by_hand_) return true;  // case 2
   // Case 1: the axis's own error in DELAYED mode, until MC_Reset.
-  return a_.config_.error_propagation_mode == ErrorPropagation::kDelayed && a_.channel_.has_error();
+  return s_.config_.error_propagation_mode == ErrorPropagation::kDelayed && s_.channel_.has_error();
 }
 
 void GroupErrors::publish_for_slaves(AxisSnapshot& snapshot) noexcept {
   if (!drives_slaves_by_actual()) {
-    a_.actual_filter_.end();
+    s_.actual_filter_.end();
     return;
   }
   // From where the slaves stood in the last cycle, towards the actual position measured then.
-  if (!a_.actual_filter_.active) a_.actual_filter_.begin(a_.previous_set_position_);
-  a_.actual_filter_.step(a_.drive_.measured_position() - a_.drive_offset_, a_.cycle_time_,
-                         a_.config_.actual_value_filter_time,
-                         a_.config_.actual_value_velocity_window);
-  snapshot.set_position = a_.actual_filter_.out.p;
-  snapshot.set_velocity = a_.actual_filter_.out.v;
-  snapshot.set_acceleration = a_.actual_filter_.out.a;
+  if (!s_.actual_filter_.active) s_.actual_filter_.begin(s_.previous_set_position_);
+  s_.actual_filter_.step(s_.drive_.measured_position() - s_.drive_offset_, s_.cycle_time_,
+                         s_.config_.actual_value_filter_time,
+                         s_.config_.actual_value_velocity_window);
+  snapshot.set_position = s_.actual_filter_.out.p;
+  snapshot.set_velocity = s_.actual_filter_.out.v;
+  snapshot.set_acceleration = s_.actual_filter_.out.a;
   snapshot.set_jerk = 0.0;
 }
 
 ErrorCode GroupErrors::push_by_hand(double velocity) noexcept {
   if (!std::isfinite(velocity)) return ErrorCode::kParameterNotFinite;
-  if (a_.config_.kind != AxisKind::kContinuous) return ErrorCode::kAxisKindNotAllowed;
-  if (std::abs(velocity) > a_.config_.max_velocity) return ErrorCode::kVelocityNotAllowed;
-  if (a_.channel_.controller_enabled()) return ErrorCode::kPushByHandControllerEnabled;
-  a_.hand_velocity_ = velocity;
+  if (s_.config_.kind != AxisKind::kContinuous) return ErrorCode::kAxisKindNotAllowed;
+  if (std::abs(velocity) > s_.config_.max_velocity) return ErrorCode::kVelocityNotAllowed;
+  if (s_.channel_.controller_enabled()) return ErrorCode::kPushByHandControllerEnabled;
+  s_.hand_velocity_ = velocity;
   return ErrorCode::kNone;
 }
 
 void GroupErrors::reset_error() noexcept {
-  a_.channel_.clear_warnings();
-  if (!a_.channel_.has_error()) return;
-  a_.channel_.clear_error();
-  a_.propagation_.cancel();  // C7: a reset before the delay has run out: no group reaction
-  if (!a_.job_.active() && !a_.slave_link_.coupled) {
+  s_.channel_.clear_warnings();
+  if (!s_.channel_.has_error()) return;
+  s_.channel_.clear_error();
+  s_.propagation_.cancel();  // C7: a reset before the delay has run out: no group reaction
+  if (!s_.job_.active() && !s_.slave_link_.coupled) {
     // The axis holds where it stands: no following error is carried over into the next start.
-    a_.set_ = KinematicState{a_.drive_.measured_position() - a_.drive_offset_, 0.0, 0.0};
+    s_.set_ = KinematicState{s_.drive_.measured_position() - s_.drive_offset_, 0.0, 0.0};
     // The drive position d steps to the actual one too: no feed-forward kick from that step.
-    a_.previous_drive_position_ = a_.drive_.measured_position();
-    a_.set_jerk_ = 0.0;
-    a_.target_ = a_.set_.p;
-    a_.monitors_.reset_windows();
+    s_.previous_drive_position_ = s_.drive_.measured_position();
+    s_.set_jerk_ = 0.0;
+    s_.target_ = s_.set_.p;
+    s_.monitors_.reset_windows();
   }
 }
 

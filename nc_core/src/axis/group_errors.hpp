@@ -22,11 +22,11 @@ class GroupErrors : public AxisPart {
   // (its link stays in the graph, SlaveLink::detached, until MC_GearOut).
   void begin_error_propagation() noexcept;
   // The monitor phase: the group reaction of this axis's error is due in this cycle.
-  bool group_reaction_due() noexcept { return a_.propagation_.step(a_.error_event_); }
+  bool group_reaction_due() noexcept { return s_.propagation_.step(s_.error_event_); }
   // The group reaction (SPEC C7 INSTANTANEOUS) reaches this axis with the faulty axis's code; the
   // first error stays. A slave goes on following (its head master's emergency ramp brings it
   // down); a master stops on its emergency ramp.
-  void group_error(ErrorCode code) noexcept { a_.raise_error(code, false); }
+  void group_error(ErrorCode code) noexcept { s_.raise_error(code, false); }
   // MC_Reset: the error and the warnings are cleared, a pending group reaction is cancelled, and
   // an axis without a job holds where it stands.
   void reset_error() noexcept;
@@ -34,7 +34,7 @@ class GroupErrors : public AxisPart {
   // Kernel, after the group reactions of a cycle with couplings: `ready` = this axis heads a
   // group in which no axis has an error and every axis has its controller enable (the
   // precondition of case 2). An uncoupled axis sets it for itself in its monitor phase.
-  void set_group_ready(bool ready) noexcept { a_.group_ready_ = ready; }
+  void set_group_ready(bool ready) noexcept { s_.group_ready_ = ready; }
   // The controller enable is missing in this cycle (`lost`: it was there in the last one): true
   // when that is the axis error 0x4260, i.e. a command runs (a job, a homing, or the coupling of
   // a slave). The one place that decides it (issue 10 item 4).
@@ -45,8 +45,8 @@ class GroupErrors : public AxisPart {
   bool update_by_hand() noexcept;
   // Not (or no longer) in case 2; a push by hand ends with the controller enable.
   void end_by_hand() noexcept {
-    a_.by_hand_ = false;
-    if (a_.channel_.controller_enabled()) a_.hand_velocity_ = 0.0;
+    s_.by_hand_ = false;
+    if (s_.channel_.controller_enabled()) s_.hand_velocity_ = 0.0;
   }
   // Kernel::push_by_hand: the drive of this disabled continuous axis moves at `velocity` (mm/s)
   // from the next cycle on, until the controller enable returns or another velocity is given.

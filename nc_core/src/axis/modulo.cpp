@@ -38,14 +38,14 @@ ErrorCode AxisCommands::start_modulo(const plc::Command& command) noexcept {
     return code;
   }
   // Where the axis comes to rest on the shortest stop: from there on, no reversal is needed.
-  double from = a_.set_.p;
-  if (a_.set_.v != 0.0 || a_.set_.a != 0.0) {
-    a_.scratch_ = plan_stop(a_.set_, limits.deceleration, limits.jerk);
-    if (!a_.scratch_.ok()) return a_.scratch_.error();
-    from = a_.scratch_.final_state().p;
+  double from = s_.set_.p;
+  if (s_.set_.v != 0.0 || s_.set_.a != 0.0) {
+    s_.scratch_ = plan_stop(s_.set_, limits.deceleration, limits.jerk);
+    if (!s_.scratch_.ok()) return s_.scratch_.error();
+    from = s_.scratch_.final_state().p;
   }
   double end = 0.0;
-  if (const ErrorCode code = modulo_end(command, from, a_.current_direction(), end);
+  if (const ErrorCode code = modulo_end(command, from, s_.current_direction(), end);
       code != ErrorCode::kNone) {
     return code;
   }
@@ -72,11 +72,11 @@ ErrorCode AxisCommands::modulo_end(const plc::Command& command, double from, dou
     default:
       return ErrorCode::kDirectionInvalid;
   }
-  const double factor = a_.config_.modulo_factor;
+  const double factor = s_.config_.modulo_factor;
   const double turns = std::floor(std::abs(position) / factor);
   if (!(turns <= kMaxModuloTurns)) return ErrorCode::kModuloTargetInvalid;
 
-  const double tolerance = std::max(a_.config_.encoder_increment, 1e-9 * factor);
+  const double tolerance = std::max(s_.config_.encoder_increment, 1e-9 * factor);
   // The nearest ends congruent to P ahead of and behind `from` (P + F·m, m whole).
   const double ahead = position + factor * std::ceil((from - tolerance - position) / factor);
   const double behind = position + factor * std::floor((from + tolerance - position) / factor);

@@ -44,46 +44,47 @@ constexpr int kVelocityAttempts = 8;
 }  // namespace
 
 bool OnlineChange::stop_active() const noexcept {
-  return a_.locked_ || a_.job_.kind() == JobKind::kHalt || a_.job_.kind() == JobKind::kStop;
+  return s_.locked_ || s_.job_.kind() == JobKind::kHalt || s_.job_.kind() == JobKind::kStop;
 }
 
 ErrorCode OnlineChange::check_new_target(double target) const noexcept {
   // Beyond the planner's range (profile/validate.hpp) or outside the software limits: 0x4222.
-  if (!within_magnitude(target) || a_.monitors_.below_min(target) ||
-      a_.monitors_.above_max(target)) {
+  if (!within_magnitude(target) || s_.monitors_.below_min(target) ||
+      s_.monitors_.above_max(target)) {
     return ErrorCode::kTargetPositionNotAllowed;
   }
-  if (a_.job_.kind() != JobKind::kPosition) return ErrorCode::kFunctionNotAllowed;
-  if (a_.stack_.compensation().running())
+  if (s_.job_.kind() != JobKind::kPosition) return ErrorCode::kFunctionNotAllowed;
+  if (s_.stack_.compensation().running()) {
     return ErrorCode::kCompensationActive;  // seed 000 §2.3, §2.4
-  if (!a_.channel_.controller_enabled() || !a_.channel_.feed_enabled(target - a_.basic_state().p)) {
+  }
+  if (!s_.channel_.controller_enabled() || !s_.channel_.feed_enabled(target - s_.basic_state().p)) {
     return ErrorCode::kNoControllerOrFeedEnable;
   }
   return ErrorCode::kNone;
 }
 
 ErrorCode OnlineChange::new_position(const plc::Command& command) noexcept {
-  if (a_.channel_.has_error()) return ErrorCode::kAxisInErrorState;
+  if (s_.channel_.has_error()) return ErrorCode::kAxisInErrorState;
   if (stop_active()) return ErrorCode::kStopAlreadyActive;
   if (!std::isfinite(command.position)) return ErrorCode::kPositionNotFinite;
   if (const ErrorCode code = check_new_target(command.position); code != ErrorCode::kNone) {
     return code;
   }
-  if (!retarget(command.position, a_.job_.user_velocity())) return ErrorCode::kPlannerNoSolution;
-  a_.job_.activation() = Activation{};  // an instantaneous-only request deletes a pending one
-  a_.channel_.answer(command.number, plc::CommandState::kDone);
+  if (!retarget(command.position, s_.job_.user_velocity())) return ErrorCode::kPlannerNoSolution;
+  s_.job_.activation() = Activation{};  // an instantaneous-only request deletes a pending one
+  s_.channel_.answer(command.number, plc::CommandState::kDone);
   return ErrorCode::kNone;
 }
 
 ErrorCode OnlineChange::new_position_and_velocity(const plc::Command& command) noexcept {
-  if (a_.channel_.has_error()) return ErrorCode::kAxisInErrorState;
+  if (s_.channel_.has_error()) return ErrorCode::kAxisInErrorState;
   if (stop_active()) return ErrorCode::kStopAlreadyActive;
   if (!std::isfinite(command.position)) return ErrorCode::kPositionNotFinite;
   if (!std::isfinite(command.velocity) || !std::isfinite(command.activation_position)) {
     return ErrorCode::kParameterNotFinite;
   }
   if (command.velocity <= 0.0) return ErrorCode::kVelocityNotPositive;
-  if (command.velocity > a_.config_.max_velocity || command.velocity > a_.config_.ref_velocity) {
+  if (command.velocity > s_.config_.max_velocity || command.velocity > s_.config_.ref_velocity) {
     return ErrorCode::kVelocityNotAllowed;
   }
   if (const ErrorCode code = check_new_target(command.position); code != ErrorCode::kNone) {
@@ -91,9 +92,9 @@ ErrorCode OnlineChange::new_position_and_velocity(const plc::Command& command) n
   }
 
   // The six cases of seed 000 §2.4 in the logical direction d (positions multiplied by d).
-  const KinematicState now = a_.basic_state();
+  const KinematicState now = s_.basic_state();
   double d = now.v > 0.0 ? 1.0 : (now.v < 0.0 ? -1.0 : 0.0);
-  if (d == 0.0) d = a_.job_.target() >= a_.job_.state().p ? 1.0 : -1.0;
+  if (d == 0.0) d = s_.job_.target() >= s_.job_.state().p ? 1.0 : -1.0;
   const double pos = d * now.p;
   const double apos = d * command.activation_position;
   const double epos = d * command.position;
@@ -113,53 +114,53 @@ ErrorCode OnlineChange::new_position_and_velocity(const plc::Command& command) n
     next.direction = -d;
   }  // cases 3 and 6: back to EPos with VOld
 
-  if (!retarget(command.position, a_.job_.user_velocity())) return ErrorCode::kPlannerNoSolution;
-  a_.job_.activation() = next;  // replaces (or, when not armed, deletes) a pending activation
-  a_.channel_.answer(command.number, plc::CommandState::kDone);
+  if (!retarget(command.position, s_.job_.user_velocity())) return ErrorCode::kPlannerNoSolution;
+  s_.job_.activation() = next;  // replaces (or, when not armed, deletes) a pending activation
+  s_.channel_.answer(command.number, plc::CommandState::kDone);
   return ErrorCode::kNone;
 }
 
 bool OnlineChange::retarget(double target, double velocity) noexcept {
-  const KinematicState from = a_.basic_state();
-  Limits limits = a_.job_.limits();
+  const KinematicState from = s_.basic_state();
+  Limits limits = s_.job_.limits();
   limits.velocity = velocity;
-  a_.scratch_ = plan_position(from, target, limits);
-  if (!a_.scratch_.ok()) return false;
-  const double reduced = reduced_level(a_.scratch_, velocity);
+  s_.scratch_ = plan_position(from, target, limits);
+  if (!s_.scratch_.ok()) return false;
+  const double reduced = reduced_level(s_.scratch_, velocity);
   const double direction = target >= from.p ? 1.0 : -1.0;
-  const uint32_t override_value = a_.job_.override_value();
+  const uint32_t override_value = s_.job_.override_value();
   const double level = override_level(velocity, reduced, override_value);
   bool final = true;
   if (override_value != plc::kOverrideFull && !plan_table(from, target, limits, level, final)) {
     return false;
   }
-  a_.job_.set_levels(velocity, reduced, direction);
-  a_.job_.set_handled_override(override_value);
+  s_.job_.set_levels(velocity, reduced, direction);
+  s_.job_.set_handled_override(override_value);
   install_table(target, final, level);
-  a_.monitors_.reset_windows();
+  s_.monitors_.reset_windows();
   return true;
 }
 
 bool OnlineChange::activate_velocity(double velocity) noexcept {
-  const uint32_t override_value = a_.job_.override_value();
+  const uint32_t override_value = s_.job_.override_value();
   const double f = override_factor(override_value);
   if (f == 0.0) {
     // At override 0 the job rests: VNew becomes its V and acts when the override rises.
-    a_.job_.set_levels(velocity, velocity, a_.job_.direction());
+    s_.job_.set_levels(velocity, velocity, s_.job_.direction());
     return false;
   }
-  const KinematicState from = a_.basic_state();
-  const double target = a_.job_.target() + (from.p - a_.job_.state().p);
+  const KinematicState from = s_.basic_state();
+  const double target = s_.job_.target() + (from.p - s_.job_.state().p);
   const double direction = target >= from.p ? 1.0 : -1.0;
   const double speed = std::abs(from.v);
-  Limits limits = a_.job_.limits();
+  Limits limits = s_.job_.limits();
   double level = velocity * f;
   for (int attempt = 0; attempt < kVelocityAttempts; ++attempt) {
     limits.velocity = level;
-    a_.scratch_ = plan_position(from, target, limits);
-    if (a_.scratch_.ok() && reaches_level(a_.scratch_, level)) {
-      a_.job_.set_levels(velocity, level / f, direction);
-      a_.job_.set_handled_override(override_value);
+    s_.scratch_ = plan_position(from, target, limits);
+    if (s_.scratch_.ok() && reaches_level(s_.scratch_, level)) {
+      s_.job_.set_levels(velocity, level / f, direction);
+      s_.job_.set_handled_override(override_value);
       install_table(target, true, level);
       return true;
     }
@@ -169,15 +170,15 @@ bool OnlineChange::activate_velocity(double velocity) noexcept {
 }
 
 void OnlineChange::install_table(double target, bool final, double level) noexcept {
-  a_.job_.replan(a_.scratch_, final);
-  a_.stack_.rebase();  // planned from a_.basic_state(): the held offset is in the table now
-  if (a_.job_.kind() == JobKind::kPosition) {
-    a_.job_.set_target(target);
-    a_.target_ = target;
+  s_.job_.replan(s_.scratch_, final);
+  s_.stack_.rebase();  // planned from s_.basic_state(): the held offset is in the table now
+  if (s_.job_.kind() == JobKind::kPosition) {
+    s_.job_.set_target(target);
+    s_.target_ = target;
   }
-  a_.job_.set_target_velocity(final ? a_.job_.direction() * level : 0.0);
+  s_.job_.set_target_velocity(final ? s_.job_.direction() * level : 0.0);
   if (final)
-    BufferedCommands(a_).plan_blend(
+    BufferedCommands(s_).plan_blend(
         level);  // a blending command waits: the new table passes its target
 }
 

@@ -22,33 +22,34 @@ class OnlineChange : public AxisPart {
   // Phase a, first: PlcToNc.Override into the job; above 1'000'000 it is not taken (warning
   // 0x4238). Inline: it runs in every cycle.
   void read_override() noexcept {
-    const uint32_t value = a_.channel_.ref().PlcToNc.Override;
+    const uint32_t value = s_.channel_.ref().PlcToNc.Override;
     if (value > plc::kOverrideFull) {
       // Not a percentage: not taken. The last valid value stays in force, the warning says why.
-      a_.channel_.warn(Warning::kOverrideNotAllowed);
+      s_.channel_.warn(Warning::kOverrideNotAllowed);
       return;
     }
-    a_.channel_.clear_warning(Warning::kOverrideNotAllowed);
-    a_.job_.set_override(value);
+    s_.channel_.clear_warning(Warning::kOverrideNotAllowed);
+    s_.job_.set_override(value);
   }
   // Phase a, last: the override and a due new velocity act on the running job (inline: it runs
   // in every cycle of a motion job).
   void run_online_functions() noexcept {
     // Only a running motion job: no override while a stop (Halt, Stop, error ramp) is active.
-    if (!a_.channel_.controller_enabled() || a_.channel_.has_error() || !a_.job_.is_motion())
+    if (!s_.channel_.controller_enabled() || s_.channel_.has_error() || !s_.job_.is_motion()) {
       return;
+    }
     bool replanned = false;
-    Activation& activation = a_.job_.activation();
-    if (a_.job_.kind() == JobKind::kPosition && activation.armed) {
+    Activation& activation = s_.job_.activation();
+    if (s_.job_.kind() == JobKind::kPosition && activation.armed) {
       const bool due = activation.immediate ||
-                       (activation.direction * (a_.set_.p - activation.position) >= 0.0 &&
-                        activation.direction * a_.set_.v > 0.0);
-      if (due && !a_.job_.in_brake_phase(a_.cycle_time_)) {
+                       (activation.direction * (s_.set_.p - activation.position) >= 0.0 &&
+                        activation.direction * s_.set_.v > 0.0);
+      if (due && !s_.job_.in_brake_phase(s_.cycle_time_)) {
         activation.armed = false;
         replanned = activate_velocity(activation.velocity);
       }
     }
-    if (!replanned && a_.job_.override_value() != a_.job_.handled_override()) apply_override();
+    if (!replanned && s_.job_.override_value() != s_.job_.handled_override()) apply_override();
   }
   // A positioning / velocity job planned from set_ with the override in force, then accept().
   ErrorCode start_positioning(uint16_t number, double target, const Limits& limits) noexcept;

@@ -50,7 +50,7 @@ Limits with_running_jerk(const Limits& limits, const KinematicState& from, const
 double OnlineChange::override_level(double user_velocity, double reduced_velocity,
                                     uint32_t override_value) const noexcept {
   const double base =
-      user_velocity_type(a_.config_.override_type) ? user_velocity : reduced_velocity;
+      user_velocity_type(s_.config_.override_type) ? user_velocity : reduced_velocity;
   return base * override_factor(override_value);
 }
 
@@ -59,77 +59,77 @@ bool OnlineChange::plan_table(const KinematicState& from, double target, const L
   if (level > 0.0) {
     Limits at_level = limits;
     at_level.velocity = level;
-    a_.scratch_ = plan_position(from, target, at_level);
+    s_.scratch_ = plan_position(from, target, at_level);
     final = true;
   } else {
-    a_.scratch_ = plan_stop(from, limits.deceleration, limits.jerk);
+    s_.scratch_ = plan_stop(from, limits.deceleration, limits.jerk);
     final = false;
   }
-  return a_.scratch_.ok();
+  return s_.scratch_.ok();
 }
 
 ErrorCode OnlineChange::start_positioning(uint16_t number, double target,
                                           const Limits& limits) noexcept {
   const Limits planned =
-      with_running_jerk(limits, a_.set_, a_.running_motion(), a_.config_.max_velocity);
+      with_running_jerk(limits, s_.set_, s_.running_motion(), s_.config_.max_velocity);
   // Planned at 100 % first: its peak is the level reduced at the start (types 1 and 3).
-  a_.scratch_ = plan_position(a_.set_, target, planned);
-  if (!a_.scratch_.ok()) return a_.scratch_.error();
-  const double reduced = reduced_level(a_.scratch_, planned.velocity);
-  const double direction = target >= a_.set_.p ? 1.0 : -1.0;
-  const uint32_t override_value = a_.job_.override_value();
+  s_.scratch_ = plan_position(s_.set_, target, planned);
+  if (!s_.scratch_.ok()) return s_.scratch_.error();
+  const double reduced = reduced_level(s_.scratch_, planned.velocity);
+  const double direction = target >= s_.set_.p ? 1.0 : -1.0;
+  const uint32_t override_value = s_.job_.override_value();
   const double level = override_level(planned.velocity, reduced, override_value);
   bool final = true;
-  if (override_value != plc::kOverrideFull && !plan_table(a_.set_, target, planned, level, final)) {
-    return a_.scratch_.error();
+  if (override_value != plc::kOverrideFull && !plan_table(s_.set_, target, planned, level, final)) {
+    return s_.scratch_.error();
   }
-  a_.accept(JobKind::kPosition, number, a_.scratch_, target, final ? direction * level : 0.0,
+  s_.accept(JobKind::kPosition, number, s_.scratch_, target, final ? direction * level : 0.0,
             planned);
-  a_.job_.set_levels(planned.velocity, reduced, direction);
-  if (!final) a_.job_.replan(a_.scratch_, false);  // a start at override 0 waits at rest
+  s_.job_.set_levels(planned.velocity, reduced, direction);
+  if (!final) s_.job_.replan(s_.scratch_, false);  // a start at override 0 waits at rest
   return ErrorCode::kNone;
 }
 
 ErrorCode OnlineChange::start_continuous(uint16_t number, double velocity,
                                          const Limits& limits) noexcept {
   const Limits planned =
-      with_running_jerk(limits, a_.set_, a_.running_motion(), a_.config_.max_velocity);
+      with_running_jerk(limits, s_.set_, s_.running_motion(), s_.config_.max_velocity);
   const double direction = velocity < 0.0 ? -1.0 : 1.0;
   const double speed = std::abs(velocity);
-  const double level = speed * override_factor(a_.job_.override_value());
-  a_.scratch_ = plan_velocity(a_.set_, direction * level, planned);
-  if (!a_.scratch_.ok()) return a_.scratch_.error();
-  a_.accept(JobKind::kVelocity, number, a_.scratch_, a_.target_, direction * level, planned);
-  a_.job_.set_levels(speed, speed, direction);
+  const double level = speed * override_factor(s_.job_.override_value());
+  s_.scratch_ = plan_velocity(s_.set_, direction * level, planned);
+  if (!s_.scratch_.ok()) return s_.scratch_.error();
+  s_.accept(JobKind::kVelocity, number, s_.scratch_, s_.target_, direction * level, planned);
+  s_.job_.set_levels(speed, speed, direction);
   return ErrorCode::kNone;
 }
 
 void OnlineChange::apply_override() noexcept {
   // Answered once: a change that is refused (brake phase, types 1 and 2) is not retried
   // (seed 000 §2.1 "In case of failure, the function is not called again automatically").
-  a_.job_.set_handled_override(a_.job_.override_value());
-  const KinematicState from = a_.basic_state();
+  s_.job_.set_handled_override(s_.job_.override_value());
+  const KinematicState from = s_.basic_state();
   const double level =
-      override_level(a_.job_.user_velocity(), a_.job_.reduced_velocity(), a_.job_.override_value());
-  if (a_.job_.kind() == JobKind::kVelocity) {
-    a_.scratch_ = plan_velocity(from, a_.job_.direction() * level, a_.job_.limits());
-    if (a_.scratch_.ok()) install_table(a_.job_.target(), true, level);
+      override_level(s_.job_.user_velocity(), s_.job_.reduced_velocity(), s_.job_.override_value());
+  if (s_.job_.kind() == JobKind::kVelocity) {
+    s_.scratch_ = plan_velocity(from, s_.job_.direction() * level, s_.job_.limits());
+    if (s_.scratch_.ok()) install_table(s_.job_.target(), true, level);
     return;
   }
-  const bool resting = !a_.job_.final_table();
-  if (!resting && a_.job_.in_brake_phase(a_.cycle_time_)) return;  // seed 000 §2.2
-  // The job's end, moved by what ended superpositions left (a_.basic_state() includes it).
-  const double target = a_.job_.target() + (from.p - a_.job_.state().p);
+  const bool resting = !s_.job_.final_table();
+  if (!resting && s_.job_.in_brake_phase(s_.cycle_time_)) return;  // seed 000 §2.2
+  // The job's end, moved by what ended superpositions left (s_.basic_state() includes it).
+  const double target = s_.job_.target() + (from.p - s_.job_.state().p);
   bool final = true;
-  if (!plan_table(from, target, a_.job_.limits(), level, final)) return;
+  if (!plan_table(from, target, s_.job_.limits(), level, final)) return;
   if (!final) {
     if (resting) return;
     // Override 0: rest on the path. A rest that would pass the target means the braking to the
     // target has in effect begun: the table goes on.
     const double toward = target - from.p;
-    if (from.v * toward > 0.0 && (a_.scratch_.final_state().p - target) * toward > 0.0) return;
-  } else if (!resting && keeps_table_type(a_.config_.override_type) &&
-             !reaches_level(a_.scratch_, level)) {
+    if (from.v * toward > 0.0 && (s_.scratch_.final_state().p - target) * toward > 0.0) return;
+  } else if (!resting && keeps_table_type(s_.config_.override_type) &&
+             !reaches_level(s_.scratch_, level)) {
     return;  // types 1 and 2: the new level is not achievable, the old table is kept
   }
   install_table(target, final, level);

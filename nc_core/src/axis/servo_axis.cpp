@@ -49,8 +49,9 @@ void ServoAxis::phase_commands(CouplingPort& port) noexcept {
   // command_buffer.cpp: a waiting command takes over; a pass left alone stops. Neither without
   // a waiting command or a pass.
   if (buffer_.waiting || job_.passing()) BufferedCommands(*this).run_buffer(port);
-  if (job_.is_motion())
+  if (job_.is_motion()) {
     OnlineChange(*this).run_online_functions();  // only a motion job has online functions
+  }
 }
 
 void ServoAxis::phase_set_values(AxisSnapshot& snapshot,
@@ -128,7 +129,7 @@ void ServoAxis::phase_monitors(AxisSnapshot& snapshot) noexcept {
 // --- AxisMonitoring ---
 
 void AxisMonitoring::check_enables() noexcept {
-  AxisCore& a = a_;  // held in a register: no reload of a_ after each store
+  AxisCore& a = s_;  // held in a register: no reload of s_ after each store
   const bool enabled = a.channel_.controller_enabled();
   const bool lost = a.enable_seen_ && !enabled;
   a.enable_seen_ = enabled;
@@ -159,7 +160,7 @@ void AxisMonitoring::check_enables() noexcept {
 }
 
 void AxisMonitoring::run_monitors() noexcept {
-  AxisCore& a = a_;  // held in a register: no reload of a_ after each store
+  AxisCore& a = s_;  // held in a register: no reload of s_ after each store
   const double actual = a.drive_.measured_position();
   const bool armed = a.channel_.controller_enabled() && !a.channel_.has_error();
   if (a.monitors_.following_error(a.drive_command().p - actual, armed)) {
@@ -186,7 +187,7 @@ void AxisMonitoring::run_monitors() noexcept {
 }
 
 void AxisMonitoring::finish_job() noexcept {
-  AxisCore& a = a_;  // held in a register: no reload of a_ after each store
+  AxisCore& a = s_;  // held in a register: no reload of s_ after each store
   if (a.homing_.finished()) {
     a.channel_.answer_current(CommandState::kDone);
     a.homing_.clear();
@@ -224,7 +225,7 @@ void AxisMonitoring::finish_job() noexcept {
 // --- AxisMotion ---
 
 void AxisMotion::generate_set_values(std::span<const AxisSnapshot> snapshots) noexcept {
-  AxisCore& a = a_;  // held in a register: no reload of a_ after each store
+  AxisCore& a = s_;  // held in a register: no reload of s_ after each store
   a.previous_set_position_ = a.set_.p;
   if (!a.channel_.controller_enabled()) {
     a.set_jerk_ = 0.0;  // no generation: control_and_drive() makes the set position follow
@@ -305,7 +306,7 @@ void AxisMotion::generate_set_values(std::span<const AxisSnapshot> snapshots) no
 }
 
 void AxisMotion::control_and_drive() noexcept {
-  AxisCore& a = a_;  // held in a register: no reload of a_ after each store
+  AxisCore& a = s_;  // held in a register: no reload of s_ after each store
   if (a.encoder_) {
     // Encoder / virtual axis: no controller, the actual values are the set values.
     const KinematicState& command = a.drive_command();
