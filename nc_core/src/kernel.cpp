@@ -151,7 +151,7 @@ void Kernel::react_in_groups() noexcept {
   // SPEC C7 (seed 000 §3.1): the group reaction of an axis's own error reaches every axis of its
   // master/slave group as the group is in this cycle, with the faulty axis's code. INSTANTANEOUS:
   // in the cycle the error is raised; DELAYED: when the faulty axis's delay has run out
-  // (ServoAxis::group_reaction_due). Errors are rare: the scan over the group's axes runs only
+  // (GroupErrors::group_reaction_due). Errors are rare: the scan over the group's axes runs only
   // for an axis whose reaction is due.
   const std::size_t n = axes_.size();
   for (std::size_t i = 0; i < n; ++i) {
