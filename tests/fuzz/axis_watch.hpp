@@ -17,8 +17,15 @@
 //  - a cyclic slave (MC_GearInDyn, C6): SetVelo = GearRatio × its master's, and in a cycle in
 //    which the factor in force moves, |SetAcc| stays within max(AccBound, |held factor × the
 //    master's SetAcc|) (the rate nearest the AccBound interval, clamped at the commanded factor);
+//    both plus what its own compensation may add, as on a linear slave;
 //  - a coupled slave shows a GearRatio != 0, except one that left its coupling on its own error
 //    under DELAYED propagation (C7): it shows as a slave with GearRatio 0 until MC_GearOut;
+//  - an HLI target (docs/behaviour.md "HLI axis coupling", D3: its own dynamic limits are not
+//    monitored): while a list is in force, |SetVelo| and |SetAcc| stay within the list's
+//    Σ |K| × each source's program limits (what the PLC passes to hli()); once the list is off
+//    (switched off, or 70200 / 70195 / an error braking the drive from at most that velocity at
+//    the emergency deceleration), within the larger of its own limits and that bound, until it
+//    rests;
 //  - a two-speed axis (E4): SetVelo is 0 or ± rapid_velocity / creep_velocity, SetAcc 0,
 //    |ActVelo| at most rapid_velocity (its own limits replace the servo ones);
 //  - every command number posted is answered (leaves kPosted) within 2 NC cycles, its answer
@@ -128,6 +135,17 @@ class AxisWatch {
     acc_bound_ = acc_bound;
   }
 
+  // HLI programs, set before every check(): `target` while the axis has an HLI list in force;
+  // `velocity` and `acceleration` bound its drive's set values by the lists of this cycle and the
+  // last (Σ |K| × the sources' program limits), +inf where the PLC cannot bound them (a gear
+  // slave among the axes). The bound stays until the axis rests (a drive braking after its list
+  // went off starts from at most that velocity).
+  void hli(bool target, double velocity, double acceleration) noexcept {
+    hli_target_ = target;
+    hli_velocity_ = std::max(hli_velocity_, velocity);
+    hli_acceleration_ = std::max(hli_acceleration_, acceleration);
+  }
+
   // --- After the PLC's calls of one cycle: the commands it posted (kernel drained the rest).
   FUZZ_CHECKER void posted(const plc::AXIS_REF& axis) noexcept {
     const std::size_t now = axis.Mailbox.pending();
@@ -152,8 +170,10 @@ class AxisWatch {
       return check_answers(axis.Mailbox);
     }
     const bool coupled = plc::test_bit(n.StateDWord, plc::kStateCoupled);
-    if (was_coupled_ && !coupled) decoupled_ = true;  // rest() ends it at once when at rest
+    // rest() ends it at once when at rest; an HLI target's drive keeps the bound of hli().
+    if (was_coupled_ && !coupled && !was_hli_target_) decoupled_ = true;
     was_coupled_ = coupled;
+    was_hli_target_ = hli_target_;
     left_ = coupled && (left_ || plc::test_bit(n.StateDWord, plc::kStateErrorPropagationDelayed));
     const bool homing = plc::test_bit(n.StateDWord, plc::kStateHomingBusy);
     if (homing && !homing_) {
@@ -173,15 +193,23 @@ class AxisWatch {
     const double held_ratio = last_ratio_;
     was_cyclic_ = cyclic;
     last_ratio_ = n.GearRatio;
-    if (cyclic) {
+    if (hli_target_) {
+      if (std::fabs(n.SetVelo) > hli_velocity_ * (1.0 + 1e-9) + 1e-9) {
+        return "HLI target set velocity above sum |K| x its sources' limits";
+      }
+      if (std::fabs(n.SetAcc) > hli_acceleration_ * (1.0 + 1e-6) + 1e-6) {
+        return "HLI target set acceleration above sum |K| x its sources' limits";
+      }
+    } else if (cyclic) {
       if (const char* broken = check_cyclic(n, moved, held_ratio)) return broken;
     } else if (coupled) {
       if (const char* broken = check_following(n)) return broken;
     } else if (!decoupled_) {
-      if (std::fabs(n.SetVelo) > velocity_ * (1.0 + 1e-9) + 1e-9) {
+      // hli_velocity_ / hli_acceleration_ are 0 unless the axis was an HLI target since it rested.
+      if (std::fabs(n.SetVelo) > std::max(velocity_, hli_velocity_) * (1.0 + 1e-9) + 1e-9) {
         return "set velocity above limit";
       }
-      if (std::fabs(n.SetAcc) > acceleration_ * (1.0 + 1e-6) + 1e-6) {
+      if (std::fabs(n.SetAcc) > std::max(acceleration_, hli_acceleration_) * (1.0 + 1e-6) + 1e-6) {
         return "set acceleration above limit";
       }
     }
@@ -229,14 +257,28 @@ class AxisWatch {
         !plc::test_bit(master_->StateDWord, plc::kStateOperational)) {
       return nullptr;
     }
-    if (!near(n.SetVelo, n.GearRatio * master_->SetVelo)) {
+    // Its own compensation adds on top as on a linear slave (C5; finding K20 was this rule
+    // without it: a superimposed move started on a cyclic slave in motion).
+    const double basic_v = n.GearRatio * master_->SetVelo;
+    if (beyond_compensation(n.SetVelo, basic_v, comp_velocity_)) {
       return "cyclic slave set velocity is not gear ratio x master set velocity";
     }
     const double bound = std::max(acc_bound_, std::fabs(held_ratio * master_->SetAcc));
-    if (moved && std::fabs(n.SetAcc) > bound * (1.0 + 1e-9) + 1e-9) {
+    if (moved &&
+        std::fabs(n.SetAcc) > (bound + compensation_acceleration(bound)) * (1.0 + 1e-9) + 1e-9) {
       return "cyclic slave factor moved with its acceleration above AccBound";
     }
     return nullptr;
+  }
+  // `value` is further from `basic` than the rounding and `allowance` (what the slave's own
+  // compensations may add) together.
+  static bool beyond_compensation(double value, double basic, double allowance) noexcept {
+    return !near(value, basic) && std::fabs(value - basic) > allowance * (1.0 + 1e-9) + 1e-9;
+  }
+  // What the slave's own compensations may add to a basic acceleration of size `basic`: AK± and
+  // VK / VP of it (SPEC C5, B7).
+  double compensation_acceleration(double basic) const noexcept {
+    return comp_acceleration_ + comp_share_ * std::fabs(basic);
   }
   const char* check_following(const plc::NCTOPLC_AXIS_REF& n) const noexcept {
     if (n.GearRatio == 0.0 && !left_coupling(n)) return "a coupled slave shows no gear ratio";
@@ -251,13 +293,10 @@ class AxisWatch {
     // acceleration (finding K10 was this checker without it: AK 3.5e-4 on a factor -0.5 slave).
     const double basic_v = n.GearRatio * master_->SetVelo;
     const double basic_a = n.GearRatio * master_->SetAcc;
-    if (!near(n.SetVelo, basic_v) &&
-        std::fabs(n.SetVelo - basic_v) > comp_velocity_ * (1.0 + 1e-9) + 1e-9) {
+    if (beyond_compensation(n.SetVelo, basic_v, comp_velocity_)) {
       return "slave set velocity is not gear ratio x master set velocity";
     }
-    if (!near(n.SetAcc, basic_a) &&
-        std::fabs(n.SetAcc - basic_a) >
-            (comp_acceleration_ + comp_share_ * std::fabs(basic_a)) * (1.0 + 1e-9) + 1e-9) {
+    if (beyond_compensation(n.SetAcc, basic_a, compensation_acceleration(basic_a))) {
       return "slave set acceleration is not gear ratio x master set acceleration";
     }
     return nullptr;
@@ -280,6 +319,8 @@ class AxisWatch {
     comp_acceleration_ = 0.0;
     comp_share_ = 0.0;
     decoupled_ = false;
+    hli_velocity_ = 0.0;
+    hli_acceleration_ = 0.0;
   }
 
   static int rank(plc::CommandState s) noexcept {
@@ -339,7 +380,8 @@ class AxisWatch {
   double velocity_ = 0.0;
   const plc::NCTOPLC_AXIS_REF* master_ = nullptr;
   double acceleration_ = 0.0;
-  // What compensations the program started may add on a slave until it rests (check_following).
+  // What compensations the program started may add on a slave until it rests (check_following,
+  // check_cyclic).
   double comp_velocity_ = 0.0;
   double comp_acceleration_ = 0.0;
   double comp_share_ = 0.0;
@@ -359,6 +401,11 @@ class AxisWatch {
   double acc_bound_ = 0.0;
   double last_ratio_ = 0.0;
   bool left_ = false;  // a slave that left its coupling (left_coupling())
+  // HLI target (hli()).
+  bool hli_target_ = false;
+  bool was_hli_target_ = false;
+  double hli_velocity_ = 0.0;
+  double hli_acceleration_ = 0.0;
   // Two-speed axis.
   bool two_speed_;
   double rapid_;

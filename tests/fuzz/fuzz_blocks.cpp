@@ -10,19 +10,28 @@
 // (bit 4 of the first byte) adds, per axis, a homing configuration (reference cam, any homing
 // values), a two-speed axis or DELAYED error propagation (any delay, actual-value coupling), and
 // the operations MC_Home (any mode, position, cam signal), MC_GearInDyn (any factor per cycle,
-// AccBound, Enable toggled) and Kernel::push_by_hand (any axis index, any velocity).
-// Every PLC cycle calls every block of every axis once, then the NC cycle runs. Checked at every
+// AccBound, Enable toggled) and Kernel::push_by_hand (any axis index, any velocity). An HLI
+// program (bits 4 and 5) is a feature program whose axes also get a logical axis number and
+// P-AXIS-00436 / 00460, with HLI_AxisCoupling lists (any sources, modes, fractions, unknown axis
+// numbers, Execute edges, a null unit), raw writes into the control units and
+// Kernel::command_position_request; the control units are checked after every NC cycle
+// (hli_rules.hpp) and an HLI target's drive against Σ |K| × its sources' limits (axis_watch.hpp).
+// Every PLC cycle calls every block of every axis that the program has used once (a block never
+// given an edge or enable is idle and skipped), then the NC cycle runs. Checked at every
 // cycle, each a crash when broken: the block output rules (block_rules.hpp) after every call, the
 // axis invariants (axis_watch.hpp: finite image, set velocity and acceleration within the limits,
 // every command answered within 2 cycles and never twice differently), and no allocation in the
 // PLC calls and the NC cycle. Only the public API is used (fb blocks, nc::Kernel, AXIS_REF).
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -32,6 +41,7 @@
 #include "byte_reader.hpp"
 #include "fail.hpp"
 #include "fb/fb.hpp"
+#include "hli_rules.hpp"
 #include "nc_core/axis_config.hpp"
 #include "nc_core/config.hpp"
 #include "nc_core/kernel.hpp"
@@ -54,6 +64,12 @@ constexpr std::size_t kCouplingOps = 14;
 // they keep their meaning.
 constexpr uint8_t kFeatureProgram = 0x10U;
 constexpr std::size_t kFeatureOps = 18;
+// Bits 4 and 5 of the first byte together make an HLI program: a feature program whose axes
+// have a third configuration byte (logical axis number, P-AXIS-00436 / 00460) and four more
+// operations: HLI_AxisCoupling lists, raw writes into the control unit, and
+// Kernel::command_position_request. No kept input has both bits, so they keep their meaning.
+constexpr uint8_t kHliProgram = 0x20U;
+constexpr std::size_t kHliOps = 22;
 
 // The blocks of one axis and the PLC program's own values for it.
 struct AxisProgram {
@@ -91,8 +107,22 @@ struct AxisProgram {
   // over the program's raw GearRatio1 writes.
   bool home_used = false;
   bool dyn_used = false;
+  // HLI programs only (see kHliProgram): the coupling block on this axis's control unit.
+  fb::HLI_AxisCoupling hli;
+  bool hli_used = false;        // called every cycle once the program gave it an edge
+  bool hli_null_unit = false;   // called with a null unit (Error 0x4F08)
+  int hli_busy = 0;             // consecutive calls Busy since the last raw semaphore write
+  bool hli_written = false;     // a list was ever written for this axis (block or raw)
+  double hli_fract = 0.0;       // largest |fract_num / fract_denom| <= 1000 ever written for it
+  bool gear_slave = false;      // ever given an MC_GearIn edge or MC_GearInDyn input
   std::size_t gear_master = 0;  // the master input of gear_in
   std::size_t edge_master = 0;  // the master input when gear_in posted its last command
+  // The blocks the program has ever given an input edge or an enable (kCalled bits). One that
+  // never had one is idle: its Execute (or Enable) has been false since it was made, so a call
+  // starts nothing, posts nothing and leaves its outputs at their defaults (all false, ErrorID
+  // 0; fb/src/execute_block.cpp begin_call / end_call in phase kIdle, MC_SetOverride with
+  // Enable false). Such calls are skipped: they are most of a cycle's calls under the sanitizers.
+  uint32_t called = 0;
   std::array<fb::MC_MoveRelative, kBurst> burst;
   // Burst blocks [0, bursts) have had a rising edge; the others have never been executed, so a
   // call leaves them idle and is skipped (the blocks are most of the calls of a cycle).
@@ -101,6 +131,21 @@ struct AxisProgram {
   int32_t feed_direction = 0;
   bool feeding = false;
 };
+
+// kCalled bits: bit k (k < kExecuteKinds) for the Execute block of edit_execute_block's kind k,
+// then MC_SetOverride, MC_GearIn and MC_GearOut.
+constexpr uint32_t kCalledSetOverride = 1U << kExecuteKinds;
+constexpr uint32_t kCalledGearIn = kCalledSetOverride << 1U;
+constexpr uint32_t kCalledGearOut = kCalledGearIn << 1U;
+constexpr uint32_t called_kind(std::size_t kind) {
+  return 1U << kind;
+}
+
+// Calls the block (with the output rules) only once the program has ever set its input.
+template <class Block>
+void call_if_used(const AxisProgram& a, uint32_t bit, Block& block, plc::AXIS_REF& axis) noexcept {
+  if ((a.called & bit) != 0) fuzz::call_checked(block, axis);
+}
 
 nc::AxisConfig axis_config(std::size_t index, uint8_t variant) {
   nc::AxisConfig c;
@@ -190,40 +235,54 @@ void feature_config(nc::AxisConfig& c, uint8_t feature, fuzz::ByteReader& in) {
   if ((feature & 0x08U) != 0) c.couple_slave_to_actual_values = true;
 }
 
-// One PLC cycle of one axis: every block once, in a fixed order (the gear blocks in coupling
-// programs only, `master` being gear_in's master input; MC_Home and MC_GearInDyn in feature
-// programs only, `dyn_master` being gear_dyn's master input).
+// HLI programs: the third configuration byte of an axis. Bits 0-5: its logical axis number is
+// index + 1 + 4 x those bits (unique in the kernel); bit 6: P-AXIS-00436 (forward mapping),
+// bit 7: P-AXIS-00460 (absolute; taken only with 00436). Software limits (variant bit 0) and
+// homed at the start (feature kind 3) make a FRACT target monitored by 70195.
+void hli_config(nc::AxisConfig& c, std::size_t index, uint8_t b, fuzz::ByteReader&) {
+  if (fuzz::g_trace) std::fprintf(stderr, " hli 0x%X", b);
+  c.id = static_cast<int>(index + 1 + 4U * (b & 0x3FU));
+  try_field(c, &nc::AxisConfig::recalc_link_main_input_position, (b & 0x40U) != 0);
+  try_field(c, &nc::AxisConfig::recalc_input_position_absolute, (b & 0x80U) != 0);
+}
+
+// One PLC cycle of one axis: every block the program has used once, in a fixed order (the gear
+// blocks in coupling programs only, `master` being gear_in's master input; MC_Home and
+// MC_GearInDyn in feature programs only, `dyn_master` being gear_dyn's master input;
+// HLI_AxisCoupling in HLI programs only, on `hli_unit`).
 void plc_cycle(AxisProgram& a, plc::AXIS_REF& axis, const plc::AXIS_REF* master,
-               const plc::AXIS_REF* dyn_master) {
+               const plc::AXIS_REF* dyn_master, plc::hli::HLI_AX* hli_unit) {
   a.power(axis);
-  fuzz::call_checked(a.reset, axis);
-  fuzz::call_checked(a.absolute, axis);
-  fuzz::call_checked(a.relative, axis);
-  fuzz::call_checked(a.modulo, axis);
-  fuzz::call_checked(a.velocity, axis);
-  fuzz::call_checked(a.halt, axis);
-  fuzz::call_checked(a.stop, axis);
-  a.set_override(axis);
-  fuzz::call_checked(a.new_pos, axis);
-  fuzz::call_checked(a.new_pos_and_velo, axis);
-  fuzz::call_checked(a.superimposed, axis);
-  fuzz::call_checked(a.abort_superposition, axis);
-  fuzz::call_checked(a.ext_enable, axis);
-  fuzz::call_checked(a.ext_disable, axis);
+  if (a.called != 0) {
+    call_if_used(a, called_kind(0), a.reset, axis);
+    call_if_used(a, called_kind(1), a.absolute, axis);
+    call_if_used(a, called_kind(2), a.relative, axis);
+    call_if_used(a, called_kind(3), a.modulo, axis);
+    call_if_used(a, called_kind(4), a.velocity, axis);
+    call_if_used(a, called_kind(5), a.halt, axis);
+    call_if_used(a, called_kind(6), a.stop, axis);
+    if ((a.called & kCalledSetOverride) != 0) a.set_override(axis);
+    call_if_used(a, called_kind(7), a.new_pos, axis);
+    call_if_used(a, called_kind(8), a.new_pos_and_velo, axis);
+    call_if_used(a, called_kind(9), a.superimposed, axis);
+    call_if_used(a, called_kind(10), a.abort_superposition, axis);
+    call_if_used(a, called_kind(11), a.ext_enable, axis);
+    call_if_used(a, called_kind(12), a.ext_disable, axis);
+  }
   for (std::size_t i = 0; i < a.bursts; ++i)
     fuzz::call_checked(a.burst[i], axis);
   if (a.feeding) {
     (void)fb::MC_ExtSetPointGenFeed(a.feed_p, a.feed_v, a.feed_a, a.feed_direction, axis);
   }
-  if (master != nullptr) {
+  if (master != nullptr && (a.called & kCalledGearIn) != 0) {
     // An edge the block takes posts a new command (one while Busy is ignored).
     const uint16_t before = a.gear_in.command_number();
     a.gear_in(*master, axis);
     if (a.gear_in.command_number() != before) a.edge_master = a.gear_master;
     if (const char* broken = fuzz::broken_output_rule(a.gear_in)) fuzz::fail(broken);
     if (a.gear_in.InGear && !a.gear_in.Busy) fuzz::fail("InGear without Busy");
-    fuzz::call_checked(a.gear_out, axis);
   }
+  if (master != nullptr) call_if_used(a, kCalledGearOut, a.gear_out, axis);
   if (dyn_master != nullptr && a.home_used) {
     a.home.bCalibrationCam = a.cam;
     fuzz::call_checked(a.home, axis);
@@ -237,6 +296,17 @@ void plc_cycle(AxisProgram& a, plc::AXIS_REF& axis, const plc::AXIS_REF* master,
     }
     if (const char* broken = fuzz::broken_output_rule(a.gear_dyn)) fuzz::fail(broken);
     if (a.gear_dyn.InGear && !a.gear_dyn.Busy) fuzz::fail("InGear without Busy");
+  }
+  if (hli_unit != nullptr && a.hli_used) {
+    a.hli(a.hli_null_unit ? nullptr : hli_unit);
+    if (const char* broken = fuzz::broken_output_rule(a.hli)) fuzz::fail(broken);
+    if (a.hli.Error && !fuzz::documented_hli_id(a.hli.ErrorID)) {
+      fuzz::fail("HLI_AxisCoupling shows an ErrorID the kernel does not document");
+    }
+    // The NC evaluates a list in the cycle it sees the semaphore: the block writes in the call
+    // after its edge at the latest (a raw write may hold the semaphore for one cycle).
+    a.hli_busy = a.hli.Busy ? a.hli_busy + 1 : 0;
+    if (a.hli_busy > 2) fuzz::fail("an HLI list is not answered within 2 NC cycles");
   }
   a.status(axis);
   a.actual_position(axis);
@@ -256,6 +326,7 @@ void set_motion(Block& b, fuzz::ByteReader& in) {
 void edit_execute_block(AxisProgram& a, fuzz::AxisWatch& watch, fuzz::ByteReader& in) {
   const std::size_t kind = in.below(kExecuteKinds);
   if (fuzz::g_trace) std::fprintf(stderr, " block %zu", kind);
+  a.called |= called_kind(kind);
   switch (kind) {
     case 0:
       a.reset.Execute = !a.reset.Execute;
@@ -355,12 +426,69 @@ void edit_home(AxisProgram& a, fuzz::ByteReader& in) {
 void edit_gear_dyn(AxisProgram& a, std::size_t n_axes, fuzz::ByteReader& in) {
   fb::MC_GearInDyn& g = a.gear_dyn;
   a.dyn_used = true;
+  a.gear_slave = true;
   g.GearRatio = in.number();
   if (in.flag()) g.Acceleration = in.number();
   if (in.flag()) {
     a.dyn_master = in.below(n_axes);
     g.Enable = !g.Enable;
   }
+}
+
+// HLI programs: an ax_nr for a list entry or a query: mostly one of the kernel's axes, else a
+// small number around them (0, negative, unknown) or any int32.
+int32_t hli_axis_number(const std::array<int, kMaxAxes>& ids, std::size_t n_axes,
+                        fuzz::ByteReader& in) {
+  const uint8_t b = in.byte();
+  if (b < 200) return ids[b % n_axes];
+  if (b < 240) return static_cast<int32_t>(b) - 220;
+  // Two statements: the operands of | are read in no specified order (see op 16).
+  const uint32_t high = in.u16();
+  const uint32_t low = in.u16();
+  return static_cast<int32_t>((high << 16U) | low);
+}
+
+// HLI programs: one list entry as a PLC may write it: any source, mode (mostly 0 … 4), fraction.
+plc::hli::HLI_AX_COUPLING_DESC hli_entry(const std::array<int, kMaxAxes>& ids, std::size_t n_axes,
+                                         fuzz::ByteReader& in) {
+  plc::hli::HLI_AX_COUPLING_DESC d;
+  d.ax_nr = hli_axis_number(ids, n_axes, in);
+  const uint8_t mode = in.byte();
+  d.mode = mode < 240 ? static_cast<uint16_t>(mode % 5) : static_cast<uint16_t>(mode * 257U);
+  if (d.mode == plc::hli::HLI_AXIS_COUPLING_FRACT) {
+    d.fract_num = static_cast<int16_t>(in.u16());
+    const uint8_t denom = in.byte();
+    d.fract_denom = denom < 128 ? static_cast<int16_t>(static_cast<int>(denom % 9) - 4)
+                                : static_cast<int16_t>(in.u16());
+  }
+  if (fuzz::g_trace) {
+    std::fprintf(stderr, " {%d %u %d/%d}", d.ax_nr, d.mode, d.fract_num, d.fract_denom);
+  }
+  return d;
+}
+
+// What a FRACT entry may add to the bound of its target's drive (a refused one adds nothing).
+double fract_factor(const plc::hli::HLI_AX_COUPLING_DESC& d) {
+  if (d.mode != plc::hli::HLI_AXIS_COUPLING_FRACT || d.fract_denom == 0) return 0.0;
+  const double k = std::fabs(static_cast<double>(d.fract_num) / d.fract_denom);
+  return k <= plc::hli::HLI_AXIS_COUPLING_FACT_MAX ? k : 0.0;
+}
+
+// HLI programs: an HLI_AxisCoupling list (1-8 entries written, then maybe an INACTIVE end; the
+// rest stays as it was) and its Execute toggled; rarely the block is called with a null unit.
+void edit_hli(AxisProgram& a, const std::array<int, kMaxAxes>& ids, std::size_t n_axes,
+              fuzz::ByteReader& in) {
+  a.hli_used = true;
+  a.hli_written = true;
+  const std::size_t count = in.below(a.hli.desc.size() + 1);
+  if (fuzz::g_trace) std::fprintf(stderr, " hli list %zu", count);
+  for (std::size_t e = 0; e < count; ++e) {
+    a.hli.desc[e] = hli_entry(ids, n_axes, in);
+    a.hli_fract = std::max(a.hli_fract, fract_factor(a.hli.desc[e]));
+  }
+  if (count < a.hli.desc.size() && in.flag()) a.hli.desc[count] = {};
+  a.hli_null_unit = in.below(32) == 0;
+  a.hli.Execute = !a.hli.Execute;
 }
 
 struct Program {
@@ -373,6 +501,10 @@ struct Program {
   int cycles = 0;
   bool coupling = false;
   bool features = false;
+  bool hli = false;
+  // HLI programs: the axes' logical numbers and the lists in force after the last cycle.
+  std::array<int, kMaxAxes> ids{};
+  std::array<std::array<plc::hli::HLI_AX_COUPLING_STATE_DESC, 8>, kMaxAxes> hli_last{};
 
   // One tick: the PLC calls every block of every axis, then one NC cycle; then the checks.
   void tick() {
@@ -389,7 +521,7 @@ struct Program {
       for (std::size_t i = 0; i < axes.size(); ++i) {
         AxisProgram& a = programs[i];
         plc_cycle(a, *axes[i], coupling ? axes[a.gear_master] : nullptr,
-                  features ? axes[a.dyn_master] : nullptr);
+                  features ? axes[a.dyn_master] : nullptr, hli ? kernel.gpAx()[i] : nullptr);
         // The packet the NC reads is the one in PlcToNc: the feed of this cycle, or an older one
         // when this cycle's was refused (a direction outside -1 … 1 writes nothing).
         const plc::PLCTONC_AXIS_REF& out = axes[i]->PlcToNc;
@@ -408,10 +540,15 @@ struct Program {
       // CmdNo is that command's number and the block shows InGear; otherwise unknown here (an
       // edge just posted, or refused while an older coupling holds).
       const AxisProgram& a = programs[i];
-      const bool known =
-          coupling && a.gear_in.InGear && axes[i]->NcToPlc.CmdNo == a.gear_in.command_number();
+      // A gear master with an HLI list publishes its drive values, its slaves follow its program
+      // (docs/behaviour.md: the combination is not checked further): not followed then.
+      const bool known = coupling && a.gear_in.InGear &&
+                         axes[i]->NcToPlc.CmdNo == a.gear_in.command_number() &&
+                         !programs[a.edge_master].hli_written && !a.hli_written;
       watches[i].follow(known ? &axes[a.edge_master]->NcToPlc : nullptr);
-      if (features && a.gear_dyn.Busy && axes[i]->NcToPlc.CmdNo == a.gear_dyn.command_number()) {
+      if (hli) check_hli(i);
+      if (features && a.gear_dyn.Busy && axes[i]->NcToPlc.CmdNo == a.gear_dyn.command_number() &&
+          !programs[a.dyn_edge_master].hli_written && !a.hli_written) {
         // The cyclic coupling in force is gear_dyn's last one (master and AccBound: that edge's).
         watches[i].follow_cyclic(&axes[a.dyn_edge_master]->NcToPlc, a.gear_dyn.command_number(),
                                  a.dyn_edge_bound);
@@ -443,6 +580,93 @@ struct Program {
       }
     }
     ++cycles;
+  }
+
+  // k ticks, as long as the program may run.
+  void run(std::size_t k) {
+    for (std::size_t i = 0; i < k && cycles < kMaxCycles; ++i)
+      tick();
+  }
+
+  // HLI programs: a raw write into an axis's control unit, as a second writer besides the block:
+  // one entry, and the semaphore set or not.
+  void raw_hli(AxisProgram& a, std::size_t i, fuzz::ByteReader& in) {
+    plc::hli::HLI_AX_COUPLING_COMMAND& command =
+        kernel.gpAx()[i]->lr_mc_control.axis_coupling.command_w;
+    const std::size_t slot = in.below(command.desc.size());
+    if (fuzz::g_trace) std::fprintf(stderr, " raw hli [%zu]", slot);
+    command.desc[slot] = hli_entry(ids, axes.size(), in);
+    a.hli_fract = std::max(a.hli_fract, fract_factor(command.desc[slot]));
+    if (in.flag()) {
+      command.semaphor_rw = true;
+      a.hli_written = true;
+      a.hli_busy = 0;
+    }
+  }
+
+  // HLI programs: Kernel::command_position_request of any ax_nr: finite for a known axis (its
+  // drive position, or the program coordinate the list maps it to), NaN for an unknown one.
+  void query_hli(fuzz::ByteReader& in) {
+    const int32_t ax_nr = hli_axis_number(ids, axes.size(), in);
+    const double q = kernel.command_position_request(ax_nr);
+    if (fuzz::g_trace) std::fprintf(stderr, " cmdpos %d -> %.17g", ax_nr, q);
+    const bool known =
+        std::find(ids.begin(), ids.begin() + static_cast<std::ptrdiff_t>(axes.size()), ax_nr) !=
+        ids.begin() + static_cast<std::ptrdiff_t>(axes.size());
+    if (known && !std::isfinite(q)) fuzz::fail("command position request of an axis not finite");
+    if (!known && !std::isnan(q)) fuzz::fail("command position request of an unknown axis not NaN");
+  }
+
+  // HLI programs, after the NC cycle: the control unit's rules (hli_rules.hpp) and the bound of
+  // the target's drive for the watch: Σ |K| × each source's program limits over the lists in
+  // force now and after the last cycle (the cycle a list goes off still moves by the old one).
+  void check_hli(std::size_t i) {
+    const plc::hli::HLI_AX& unit = *kernel.gpAx()[i];
+    if (const char* broken =
+            fuzz::broken_hli_unit(unit, std::span<const int>(ids.data(), axes.size()))) {
+      fuzz::fail(broken);
+    }
+    const plc::hli::HLI_AX_COUPLING_STATE& state = unit.lr_mc_control.axis_coupling.state_r;
+    double velocity = 0.0;
+    double acceleration = 0.0;
+    double last_velocity = 0.0;
+    double last_acceleration = 0.0;
+    bound_list(i, state.desc, velocity, acceleration);
+    bound_list(i, hli_last[i], last_velocity, last_acceleration);
+    velocity = std::max(velocity, last_velocity);
+    acceleration = std::max(acceleration, last_acceleration);
+    if (fuzz::g_trace) {
+      const fb::HLI_AxisCoupling& b = programs[i].hli;
+      std::fprintf(
+          stderr,
+          "  [%d] axis %zu hli: active %d error_r %u block %d%d%d 0x%X bound v %.9g a %.9g\n",
+          cycles, i, state.active_r ? 1 : 0, state.error_r, b.Busy ? 1 : 0, b.Done ? 1 : 0,
+          b.Error ? 1 : 0, b.ErrorID, velocity, acceleration);
+    }
+    watches[i].hli(state.active_r, velocity, acceleration);
+    hli_last[i] = state.desc;
+  }
+  void bound_list(std::size_t target,
+                  const std::array<plc::hli::HLI_AX_COUPLING_STATE_DESC, 8>& list, double& velocity,
+                  double& acceleration) const {
+    constexpr double kUnbounded = std::numeric_limits<double>::infinity();
+    if (programs[target].gear_slave) velocity = acceleration = kUnbounded;
+    for (const plc::hli::HLI_AX_COUPLING_STATE_DESC& e : list) {
+      if (e.mode == plc::hli::HLI_AXIS_COUPLING_INACTIVE) break;
+      if (e.mode == plc::hli::HLI_AXIS_COUPLING_ZERO) continue;
+      const double k =
+          e.mode == plc::hli::HLI_AXIS_COUPLING_FRACT ? programs[target].hli_fract : 1.0;
+      if (k == 0.0) continue;
+      const std::size_t s = static_cast<std::size_t>(
+          std::find(ids.begin(), ids.begin() + static_cast<std::ptrdiff_t>(axes.size()), e.ax_nr) -
+          ids.begin());
+      if (s >= axes.size() || programs[s].gear_slave) {
+        velocity = acceleration = kUnbounded;
+        continue;
+      }
+      velocity += k * watches[s].velocity_limit();
+      acceleration += k * watches[s].acceleration_limit();
+    }
   }
 
   // Between cycles, as a test or sample would: a push is taken (from the next cycle on) or
@@ -484,6 +708,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
   fuzz::ByteReader in(data, size);
   const uint8_t first = in.byte();
   const bool features = (first & kFeatureProgram) != 0;
+  const bool hli = features && (first & kHliProgram) != 0;
   Program p{nc::Kernel(kernel_config(first)),
             {},
             {},
@@ -494,11 +719,14 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
             features || (first & kCouplingProgram) != 0,
             features};
   const std::size_t n_axes = 1 + in.below(kMaxAxes);
+  p.hli = hli;
   p.programs.resize(n_axes);
   for (std::size_t i = 0; i < n_axes; ++i) {
     nc::AxisConfig config = axis_config(i, in.byte());
     if (features) feature_config(config, in.byte(), in);
+    if (hli) hli_config(config, i, in.byte(), in);
     p.axes.push_back(&p.kernel.add_axis(config));
+    p.ids[i] = p.kernel.config(config.name).id;
     p.watches.emplace_back(config);
     p.names.push_back(config.name);
     p.two_speed_images.push_back(
@@ -513,8 +741,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
     const std::size_t axis_index = static_cast<std::size_t>(&a - p.programs.data());
     plc::AXIS_REF& axis = *p.axes[axis_index];
     fuzz::AxisWatch& watch = p.watches[axis_index];
-    const std::size_t op =
-        in.below(features ? kFeatureOps : (p.coupling ? kCouplingOps : kPlainOps));
+    const std::size_t op = in.below(
+        hli ? kHliOps : (features ? kFeatureOps : (p.coupling ? kCouplingOps : kPlainOps)));
     if (fuzz::g_trace) std::fprintf(stderr, "\nop %zu axis %zu:", op, axis_index);
     switch (op) {
       case 0:
@@ -530,6 +758,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
         if (in.flag()) a.power.Override = in.number();
         break;
       case 5:
+        a.called |= kCalledSetOverride;
         a.set_override.Enable = in.flag();
         a.set_override.VelFactor = in.number();
         break;
@@ -581,8 +810,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
         a.gear_in.RatioDenominator = in.flag() ? in.u16() : 1;
         a.gear_master = in.below(n_axes);
         a.gear_in.Execute = !a.gear_in.Execute;
+        a.called |= kCalledGearIn;
+        a.gear_slave = true;
         break;
       case 13:
+        a.called |= kCalledGearOut;
         a.gear_out.Execute = !a.gear_out.Execute;
         break;
       case 14:
@@ -591,15 +823,31 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
       case 15:
         edit_gear_dyn(a, n_axes, in);
         break;
-      case 16:
-        p.push_by_hand(in.below(n_axes + 1), in.number());  // index n_axes: unknown
-        break;
-      default: {
-        const std::size_t k = 1 + in.below(64);
-        for (std::size_t i = 0; i < k && p.cycles < kMaxCycles; ++i)
-          p.tick();
+      case 16: {
+        // Read in this order on every compiler (the order of a call's arguments is not
+        // specified: GCC read the velocity first, so its replay decoded other programs).
+        const std::size_t index = in.below(n_axes + 1);  // n_axes: an unknown axis
+        const double velocity = in.number();
+        p.push_by_hand(index, velocity);
         break;
       }
+      case 17:
+      case 18:
+        if (hli) {
+          edit_hli(a, p.ids, n_axes, in);
+        } else {
+          p.run(1 + in.below(64));  // op 17 of a feature program
+        }
+        break;
+      case 19:
+        p.raw_hli(a, axis_index, in);
+        break;
+      case 20:
+        p.query_hli(in);
+        break;
+      default:
+        p.run(1 + in.below(64));
+        break;
     }
   }
   for (int i = 0; i < 3; ++i)

@@ -158,6 +158,54 @@ def push(index, velocity):
     """Kernel::push_by_hand(index, velocity) between two cycles."""
     return bytes([0, 16, index]) + num(velocity)
 
+HLI = 0x20  # first byte, with FEATURES: an HLI program (HLI_AxisCoupling, raw unit writes, queries)
+
+
+def hli_program(cycle=0, axes=((0, bytes([0]), 0),), ops=()):
+    """An HLI program: each axis is (variant, feature bytes, HLI byte: bits 0-5 its ax_nr is
+    index + 1 + 4 x those, bit 6 P-AXIS-00436, bit 7 P-AXIS-00460)."""
+    out = bytes([FEATURES | HLI | cycle, len(axes) - 1])
+    for variant, feature, hli in axes:
+        out += bytes([variant]) + feature + bytes([hli])
+    for op in ops:
+        out += op
+    return out
+
+
+def hli_entry(axis, mode, fract_num=0, fract_denom=1):
+    """One list entry: `axis` an axis index (its ax_nr), or ('nr', n) for ax_nr n in -20 ... 19."""
+    ax = bytes([n + 220]) if isinstance(axis, tuple) and (n := axis[1]) is not None else bytes([axis])
+    out = ax + bytes([mode])
+    if mode == 4:
+        den = bytes([fract_denom + 4]) if -4 <= fract_denom <= 4 else bytes([200]) + struct.pack(
+            ">h", fract_denom)
+        out += struct.pack(">h", fract_num) + den
+    return out
+
+
+def hli_list(target, entries, end=True):
+    """HLI_AxisCoupling on `target`: the entries, an INACTIVE end after them, Execute toggled."""
+    out = bytes([target, 17, len(entries)]) + b"".join(entries)
+    if len(entries) < 8:
+        out += bytes([1 if end else 0])
+    return out + bytes([1])  # a unit, not null
+
+
+def hli_apply(target, entries, end=True):
+    """hli_list, three cycles for the answer, then Execute back to FALSE (desc unchanged)."""
+    return hli_list(target, entries, end) + run(0, 3) + bytes([target, 17, 0, 0, 1]) + run(0, 1)
+
+
+def hli_raw(target, slot, entry, semaphore=True):
+    """A raw write of one entry into the target's control unit, and its semaphore."""
+    return bytes([target, 19, slot]) + entry + bytes([1 if semaphore else 0])
+
+
+def command_position(axis):
+    """Kernel::command_position_request of axis index `axis`'s ax_nr (or ('nr', n))."""
+    return bytes([0, 20]) + (bytes([axis[1] + 220]) if isinstance(axis, tuple) else bytes([axis]))
+
+
 BLOCKS = {
     "move_absolute": blocks_program(ops=[run(0, 3), absolute(0, 500, 1000), run(0, 64), run(0, 64)]),
     "move_and_new_pos": blocks_program(ops=[run(0, 3), absolute(0, 3000, 2000), run(0, 64),
@@ -215,6 +263,40 @@ BLOCKS = {
         ops=[run(0, 3), gear_in(1, 0, 2), run(0, 3), fault(0, 2), run(0, 2), push(0, 100),
              run(0, 64), push(0, 0), push(1, 50), push(2, 10), run(0, 20), fault(0, 2), run(0, 20),
              absolute(0, 50, 1000), run(0, 64), fault(1, 0), run(0, 64)]),
+    "hli_direct": hli_program(
+        cycle=1, axes=((0, bytes([0]), 0), (0, bytes([0]), 0)),
+        ops=[run(0, 3), hli_apply(1, [hli_entry(0, 2)]), absolute(0, 500, 1000)]
+        + [run(0, 64)] * 6 + [command_position(1), hli_apply(1, []),
+             hli_apply(1, []), absolute(1, 100, 500), run(0, 64)]),
+    "hli_fract_self_mapping": hli_program(
+        axes=((0, bytes([0]), 0), (0, bytes([0]), 0), (0, bytes([0]), 0x40)),
+        ops=[run(0, 3), hli_apply(2, [hli_entry(2, 2), hli_entry(0, 4, -5, 9)]),
+             absolute(0, 20, 500), run(0, 64), absolute(2, 30, 500), run(0, 64),
+             command_position(2), command_position(("nr", 9)), hli_apply(2, [hli_entry(1, 3)]),
+             hli_apply(2, []), command_position(2)]),
+    "hli_change_while_moving": hli_program(
+        axes=((0, bytes([0]), 0), (0, bytes([0]), 1)),
+        ops=[run(0, 3), hli_apply(1, [hli_entry(0, 3)]), velocity(0, 800), run(0, 20),
+             hli_apply(1, [hli_entry(0, 2)]), run(0, 61), execute(1, 0), run(0, 3), halt(0)] + [run(0, 64)] * 5 + [execute(1, 0), run(0, 3), hli_list(1, [hli_entry(0, 2)]), run(0, 5)]),
+    "hli_bad_lists": hli_program(
+        axes=((0, bytes([0]), 0), (0, two_speed_feature(), 0), (0, bytes([0]), 0x40)),
+        ops=[run(0, 3), hli_apply(0, [hli_entry(("nr", 17), 2)]),
+             hli_apply(0, [hli_entry(2, 250)]), hli_apply(0, [hli_entry(2, 4, 3, 0)]),
+             hli_apply(0, [hli_entry(2, 4, 2000, 1)]),
+             hli_apply(0, [hli_entry(1, 2)]), hli_apply(2, [hli_entry(0, 2)]),
+             hli_apply(0, [hli_entry(2, 2)]),
+             hli_raw(0, 0, hli_entry(0, 4, 1000, 1)), run(0, 3), fault(0, 2), run(0, 2),
+             hli_apply(0, [hli_entry(0, 2)])]),
+    "hli_fract_software_limit": hli_program(
+        axes=((0, bytes([0]), 0), (1, homing_feature(homed=True), 0)),
+        ops=[run(0, 3), hli_apply(1, [hli_entry(0, 4, 7, 2)]),
+             absolute(0, 600, 2000)] + [run(0, 64)] * 8 + [execute(1, 0), run(0, 3)]),
+    "hli_source_and_target_errors": hli_program(
+        axes=((0, bytes([0]), 0), (0x04, bytes([0]), 0), (0, bytes([0]), 0)),
+        ops=[run(0, 3), hli_apply(2, [hli_entry(0, 2), hli_entry(1, 4, 3, 2)]),
+             velocity(0, 300), absolute(1, 500, 2000), run(0, 64), run(0, 64), fault(0, 0),
+             run(0, 64), execute(0, 0), execute(1, 0), run(0, 3), velocity(0, 300), run(0, 30),
+             fault(2, 2), run(0, 64), run(0, 64)]),
     "bad_inputs": blocks_program(ops=[run(0, 3), absolute(0, "nan", 1000), run(0, 3),
                                      absolute(0, 100, "inf"), run(0, 3), absolute(0, 100, -5),
                                      run(0, 3), absolute(0, "huge", 1000), run(0, 3),

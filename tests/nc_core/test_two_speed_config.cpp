@@ -83,6 +83,31 @@ TEST_CASE("on a two-speed axis the creep speed is not above the rapid speed",
             "/creep_velocity: must be <= rapid_velocity (500) on a two-speed axis (got 600)"));
 }
 
+// Fuzz finding K11: a rapid speed of 2.5e306 mm/s was taken, and its first step (ramp time 0)
+// published an infinite ActAcc. The bound is the planner's numeric range, which bounds every
+// velocity a servo axis can be commanded.
+TEST_CASE("on a two-speed axis the rapid speed lies within the NC's numeric range, 1e12 mm/s",
+          "[config][two_speed]") {
+  nc::AxisConfig c = named_axis(nc::AxisKind::kTwoSpeed);
+  c.rapid_velocity = 1e12;
+  CHECK_NOTHROW(nc::validate(c));
+  for (const double bad : {1.0000000000000002e12, 2.5319621617779095e306}) {
+    c.rapid_velocity = bad;
+    const auto e = error_of([&] { nc::validate(c); });
+    REQUIRE(e);
+    CHECK(e->pointer() == "/rapid_velocity");
+    CHECK(e->rule() == "must be <= 1e+12 (the NC's numeric range) on a two-speed axis");
+  }
+  c.rapid_velocity = 2.5319621617779095e306;
+  CHECK(error_of([&] { nc::validate(c); })->what() ==
+        std::string("/rapid_velocity: must be <= 1e+12 (the NC's numeric range) on a two-speed "
+                    "axis (got 2.5319621617779095e+306)"));
+  // A servo axis does not use the field.
+  c.kind = nc::AxisKind::kContinuous;
+  c.creep_velocity = 50.0;
+  CHECK_NOTHROW(nc::validate(c));
+}
+
 TEST_CASE("an enabled looping distance must exceed both braking distances together",
           "[config][two_speed]") {
   nc::AxisConfig c = named_axis(nc::AxisKind::kTwoSpeed);

@@ -8,6 +8,7 @@
 // cycle what the standalone sequencer and plant do.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 
@@ -173,4 +174,29 @@ TEST_CASE("the NC→PLC image of a two-speed axis while it travels and at rest",
   read(rig.axis);
   CHECK(read.Valid);
   CHECK(read.Position == rig.actual());
+}
+
+// Fuzz finding K11's other half: at the largest rapid speed the configuration takes (1e12 mm/s)
+// with a step ramp (ramp time 0), the step's acceleration is 1e12 / 0.001 s = 1e15 mm/s², and
+// every value the NC publishes stays finite.
+TEST_CASE("at a rapid speed of 1e12 mm/s with a step ramp every published value stays finite",
+          "[two_speed][kernel]") {
+  nc::AxisConfig config = ts::issue_axis();
+  config.rapid_velocity = 1e12;
+  config.two_speed_ramp_time = 0.0;
+  tsk::Rig rig(config);
+  rig.move.Position = 1000.0;
+  rig.move.Velocity = 1e12;
+  rig.move.Execute = true;
+  double largest_acceleration = 0.0;
+  for (int i = 0; i < 300; ++i) {
+    rig.cycle();
+    const plc::NCTOPLC_AXIS_REF& nc = rig.axis.NcToPlc;
+    INFO("cycle " << i);
+    for (const double value : {nc.ActPos, nc.ActVelo, nc.ActAcc, nc.SetPos, nc.SetVelo, nc.SetAcc,
+                               nc.TargetPos, nc.TargetVelo})
+      REQUIRE(std::isfinite(value));
+    largest_acceleration = std::max(largest_acceleration, std::abs(nc.ActAcc));
+  }
+  CHECK(largest_acceleration == 1e15);
 }

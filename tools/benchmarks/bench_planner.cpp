@@ -14,105 +14,15 @@
 #include <vector>
 
 #include "nc_core/profile.hpp"
+#include "planner_sets.hpp"
 
 namespace {
 
-constexpr std::uint64_t kSeed = 20240503;
-constexpr std::size_t kSetSize = 4096;
-
-struct Problem {
-  nc::KinematicState start;
-  double target = 0.0;  // position, or velocity for the velocity set
-  nc::Limits limits;
-  double end_velocity = 0.0;  // the passing set's v_end (never 0 there)
-};
-
-class Draw {
- public:
-  explicit Draw(std::uint64_t seed) : rng_(seed) {}
-  double uniform(double lo, double hi) {
-    return std::uniform_real_distribution<double>(lo, hi)(rng_);
-  }
-  double log_uniform(double lo, double hi) { return std::exp(uniform(std::log(lo), std::log(hi))); }
-  double sign() { return uniform(0.0, 1.0) < 0.5 ? -1.0 : 1.0; }
-  nc::Limits limits() {
-    nc::Limits l;
-    l.velocity = log_uniform(1e-2, 1e5);
-    l.acceleration = log_uniform(1e-1, 1e7);
-    l.deceleration = log_uniform(1e-1, 1e7);
-    l.jerk = log_uniform(1.0, 1e9);
-    return l;
-  }
-  double distance() { return sign() * log_uniform(1e-6, 1e5); }
-  // A feasible moving state: one taken from another time-optimal profile with the same limits.
-  nc::KinematicState moving_state(const nc::Limits& l) {
-    const double d = distance();
-    const nc::Profile other = nc::plan_position({-d * uniform(0.0, 1.0), 0.0, 0.0}, d, l);
-    nc::KinematicState s = other.at(uniform(0.0, other.duration()));
-    s.p = 0.0;
-    return s;
-  }
-
- private:
-  std::mt19937_64 rng_;
-};
-
-const std::vector<Problem>& rest_set() {
-  static const std::vector<Problem> set = [] {
-    Draw draw(kSeed);
-    std::vector<Problem> v(kSetSize);
-    for (Problem& q : v) {
-      q.limits = draw.limits();
-      q.target = draw.distance();
-    }
-    return v;
-  }();
-  return set;
-}
-
-const std::vector<Problem>& state_set() {
-  static const std::vector<Problem> set = [] {
-    Draw draw(kSeed + 1);
-    std::vector<Problem> v(kSetSize);
-    for (Problem& q : v) {
-      q.limits = draw.limits();
-      q.start = draw.moving_state(q.limits);
-      q.target = draw.distance();
-    }
-    return v;
-  }();
-  return set;
-}
-
-const std::vector<Problem>& passing_set() {
-  static const std::vector<Problem> set = [] {
-    Draw draw(kSeed + 3);
-    std::vector<Problem> v(kSetSize);
-    for (Problem& q : v) {
-      q.limits = draw.limits();
-      q.start = draw.moving_state(q.limits);
-      q.target = draw.distance();
-      const double u = draw.uniform(-1.0, 1.0);
-      q.end_velocity = (u != 0.0 ? u : 1.0) * q.limits.velocity;
-    }
-    return v;
-  }();
-  return set;
-}
-
-const std::vector<Problem>& velocity_set() {
-  static const std::vector<Problem> set = [] {
-    Draw draw(kSeed + 2);
-    std::vector<Problem> v(kSetSize);
-    for (Problem& q : v) {
-      q.limits = draw.limits();
-      q.start = draw.moving_state(q.limits);
-      q.target = draw.uniform(-1.0, 1.0) * q.limits.velocity;
-    }
-    return v;
-  }();
-  return set;
-}
+using planner_sets::passing_set;
+using planner_sets::Problem;
+using planner_sets::rest_set;
+using planner_sets::state_set;
+using planner_sets::velocity_set;
 
 nc::Profile plan_position(const Problem& q) {
   return nc::plan_position(q.start, q.target, q.limits);

@@ -188,6 +188,10 @@ void AxisMonitoring::run_monitors() noexcept {
 
 void AxisMonitoring::finish_job() noexcept {
   AxisCore& a = s_;  // held in a register: no reload of s_ after each store
+  // A job answers Done only while it is the command the axis executes and still runs: a job
+  // without a number of its own (a slave decoupled in motion goes on with its master's plan)
+  // must not answer CmdNo, which may be a command already answered (fuzz finding K12).
+  const bool own = a.channel_.runs(a.job_.number());
   if (a.homing_.finished()) {
     a.channel_.answer_current(CommandState::kDone);
     a.homing_.clear();
@@ -200,7 +204,7 @@ void AxisMonitoring::finish_job() noexcept {
       // Done = set-value generation ended and the target window reached (or switched off). A
       // pass (blending) is done when the waiting command takes over (command_buffer.cpp).
       if (a.job_.generation_ended() && !a.job_.passing() && a.monitors_.in_target_position()) {
-        a.channel_.answer_current(CommandState::kDone);
+        if (own) a.channel_.answer_current(CommandState::kDone);
         a.job_.clear();
       }
       break;
@@ -212,7 +216,7 @@ void AxisMonitoring::finish_job() noexcept {
     case JobKind::kHalt:
     case JobKind::kStop:
       if (a.job_.generation_ended()) {
-        a.channel_.answer_current(CommandState::kDone);
+        if (own) a.channel_.answer_current(CommandState::kDone);
         a.job_.clear();
       }
       break;

@@ -21,6 +21,7 @@
 #include "nc_core/profile.hpp"
 #include "profile/finish.hpp"
 #include "profile/profile_writer.hpp"
+#include "profile/push_scan.hpp"
 #include "profile/rest_to_rest.hpp"
 #include "profile/root.hpp"
 #include "profile/stop_point.hpp"
@@ -47,10 +48,7 @@ Profile finish(const KinematicState& start, double target, double dir, const Pie
 }  // namespace
 
 Profile plan_position(const KinematicState& start, double target, const Limits& limits) noexcept {
-  ErrorCode e = detail::check_state(start);
-  if (e == ErrorCode::kNone) e = detail::check_target(target);
-  if (e == ErrorCode::kNone) e = detail::check_limits(limits);
-  if (e == ErrorCode::kNone) e = detail::check_start_against(start, limits);
+  const ErrorCode e = detail::check_plan(start, target, limits);
   if (e != ErrorCode::kNone) return Profile::failure(e);
 
   const Bounds bounds{limits.acceleration, limits.deceleration, limits.jerk};
@@ -86,68 +84,64 @@ Profile plan_position(const KinematicState& start, double target, const Limits& 
   const double dir = rest > 0.0 ? 1.0 : -1.0;
   const double goal = dir * distance;
   detail::PieceBuffer<detail::kMaxChangePieces> push_room;
-  detail::Piece* push = push_room.items;
+  Piece* push = push_room.items;
+  // The push, walked until the piece whose end's stop reaches the goal (profile/push_scan.hpp).
+  detail::PushScan scan{
+      push, {0.0, dir * start.v, dir * start.a}, dir * stop_distance, goal, stop_bounds};
   const int n_push =
-      detail::velocity_change(dir * start.v, dir * start.a, limits.velocity, bounds, push);
+      detail::velocity_change(dir * start.v, dir * start.a, limits.velocity, bounds, scan);
   if (n_push < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
-
-  KinematicState s{0.0, dir * start.v, dir * start.a};
-  double s_here = dir * stop_distance;  // where the shortest stop from s ends
-  for (int i = 0; i < n_push; ++i) {
-    const KinematicState next = detail::advance(s, push[i]);
-    const double s_next = next.p + detail::stop_distance_of(next.v, next.a, stop_bounds);
-    if (s_next >= goal) {
-      // The switch from push to stop lies in this piece.
-      const double jerk = push[i].j;
-      // S(tau) - goal with its derivatives: p' = v, v' = a, a' = jerk along the push.
-      const double jerk6 = jerk / 6.0;
-      auto fd = [&](double tau) {
-        using detail::Jet;
-        const double a_t = s.a + jerk * tau;
-        const double v_t = s.v + tau * (s.a + (0.5 * jerk) * tau);
-        const double p_t = s.p + tau * (s.v + tau * (0.5 * s.a + tau * jerk6));
-        const Jet d =
-            detail::stop_distance_of(Jet{v_t, a_t, jerk}, Jet{a_t, jerk, 0.0}, stop_bounds);
-        return detail::RootPoint{p_t + d.x - goal, v_t + d.d, a_t + d.dd,
-                                 kRootTolerance * (std::abs(p_t) + std::abs(d.x) + goal)};
-      };
-      // A start acceleration against the push beyond A- (a < -A-, the motion still forwards:
-      // v_nat > 0) is brought back by the stop at +J, as the push's first ramp does: along that
-      // ramp S(tau) stays S(0) until a is back at A-. The search starts at the end of that flat
-      // stretch, where S begins to rise (fuzz finding P19: A- = J = 3.5e-9, a = -2 A-; from
-      // tau = 0 the power law below saw S rise from a point 1.01 s away, and 100 steps
-      // alternated between both ends of the bracket and stopped 2.1e-9 short of the goal).
-      double lo = 0.0;
-      double f_lo = s_here - goal;
-      if (jerk > 0.0 && s.a < -stop_bounds.am_limit &&
-          detail::natural_velocity(s.v, s.a, jerk) > 0.0) {
-        const double t_flat = (-stop_bounds.am_limit - s.a) / jerk;
-        if (t_flat < push[i].t) {
-          const double f_flat = fd(t_flat).f;
-          if (f_flat < 0.0) {
-            lo = t_flat;
-            f_lo = f_flat;
-          }
+  const KinematicState s = scan.s;
+  if (scan.found) {
+    // The switch from push to stop lies in piece i.
+    const int i = n_push - 1;
+    const double s_here = scan.s_here;  // S at the piece's start
+    const double s_next = scan.s_next;  // S at its end
+    const double jerk = push[i].j;
+    // S(tau) - goal with its derivatives: p' = v, v' = a, a' = jerk along the push.
+    const double jerk6 = jerk / 6.0;
+    auto fd = [&](double tau) {
+      const double a_t = s.a + jerk * tau;
+      const double v_t = s.v + tau * (s.a + (0.5 * jerk) * tau);
+      const double p_t = s.p + tau * (s.v + tau * (0.5 * s.a + tau * jerk6));
+      const detail::StopAlong d = detail::stop_point_along(v_t, a_t, jerk, stop_bounds);
+      return detail::RootPoint{p_t + d.distance - goal, d.d, d.dd,
+                               kRootTolerance * (std::abs(p_t) + std::abs(d.distance) + goal)};
+    };
+    // A start acceleration against the push beyond A- (a < -A-, the motion still forwards:
+    // v_nat > 0) is brought back by the stop at +J, as the push's first ramp does: along that
+    // ramp S(tau) stays S(0) until a is back at A-. The search starts at the end of that flat
+    // stretch, where S begins to rise (fuzz finding P19: A- = J = 3.5e-9, a = -2 A-; from
+    // tau = 0 the power law below saw S rise from a point 1.01 s away, and 100 steps
+    // alternated between both ends of the bracket and stopped 2.1e-9 short of the goal).
+    double lo = 0.0;
+    double f_lo = s_here - goal;
+    if (jerk > 0.0 && s.a < -stop_bounds.am_limit &&
+        detail::natural_velocity(s.v, s.a, jerk) > 0.0) {
+      const double t_flat = (-stop_bounds.am_limit - s.a) / jerk;
+      if (t_flat < push[i].t) {
+        const double f_flat = fd(t_flat).f;
+        if (f_flat < 0.0) {
+          lo = t_flat;
+          f_lo = f_flat;
         }
       }
-      // Start where S - S(lo) = c (tau - lo)^n would meet the goal, with the exponent it
-      // typically has over a piece: 2 on a hold (a constant), 4 on a jerk piece (measured on the
-      // benchmark sets: 2.5 evaluations per root instead of 3.4 from the secant point). The root
-      // finder also uses that power law when its local model misleads it.
-      const double r0 = std::clamp(
-          lo == 0.0 ? (goal - s_here) / (s_next - s_here) : -f_lo / ((s_next - goal) - f_lo), 0.0,
-          1.0);
-      const double q0 = std::sqrt(r0);
-      const double x0 = lo + (push[i].t - lo) * (jerk == 0.0 ? q0 : std::sqrt(q0));
-      const double tau = detail::find_root_quadratic(fd, lo, push[i].t, x0, f_lo);
-      const KinematicState x = detail::advance(s, jerk, tau);
-      push[i] = Piece{tau, jerk, x.a, NAN};
-      n_stop = detail::velocity_change(x.v, x.a, 0.0, bounds, stop);
-      if (n_stop < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
-      return finish(start, target, dir, push, i + 1, 0.0, stop, n_stop);
     }
-    s = next;
-    s_here = s_next;
+    // Start where S - S(lo) = c (tau - lo)^n would meet the goal, with the exponent it
+    // typically has over a piece: 2 on a hold (a constant), 4 on a jerk piece (measured on the
+    // benchmark sets: 2.5 evaluations per root instead of 3.4 from the secant point). The root
+    // finder also uses that power law when its local model misleads it.
+    const double r0 = std::clamp(
+        lo == 0.0 ? (goal - s_here) / (s_next - s_here) : -f_lo / ((s_next - goal) - f_lo), 0.0,
+        1.0);
+    const double q0 = std::sqrt(r0);
+    const double x0 = lo + (push[i].t - lo) * (jerk == 0.0 ? q0 : std::sqrt(q0));
+    const double tau = detail::find_root_quadratic(fd, lo, push[i].t, x0, f_lo);
+    const KinematicState x = detail::advance(s, jerk, tau);
+    push[i] = Piece{tau, jerk, x.a, NAN};
+    n_stop = detail::velocity_change(x.v, x.a, 0.0, bounds, stop);
+    if (n_stop < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
+    return finish(start, target, dir, push, i + 1, 0.0, stop, n_stop);
   }
   // The push reaches V: cruise for the rest, then stop from (V, 0).
   n_stop = detail::velocity_change(limits.velocity, 0.0, 0.0, bounds, stop);

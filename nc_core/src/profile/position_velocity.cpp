@@ -98,10 +98,7 @@ Profile plan_position(const KinematicState& start, double target, double target_
   // The same checks as the three-argument call (its numeric range: a target beyond 1e12 is
   // 0x4222), and an end velocity 0 or within [1e-100, V] (a subnormal one: 0x4221, as
   // plan_velocity's target velocity).
-  ErrorCode e = detail::check_state(start);
-  if (e == ErrorCode::kNone) e = detail::check_target(target);
-  if (e == ErrorCode::kNone) e = detail::check_limits(limits);
-  if (e == ErrorCode::kNone) e = detail::check_start_against(start, limits);
+  ErrorCode e = detail::check_plan(start, target, limits);
   if (e == ErrorCode::kNone && !std::isfinite(target_velocity)) {
     e = ErrorCode::kParameterNotFinite;
   }

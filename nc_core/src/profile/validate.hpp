@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <cstring>
 
 #include "nc_core/profile.hpp"
 #include "profile/velocity_change.hpp"
@@ -131,17 +133,47 @@ inline ErrorCode check_target(double target) noexcept {
   return ErrorCode::kNone;
 }
 
+// check_state(s), check_target(target), check_limits(l) and check_start_against(s, l), in this
+// order: the first code found. When every value lies plainly inside its range (the common case),
+// one test stands for the first three (each of them gives kNone then).
+inline ErrorCode check_plan(const KinematicState& s, double target, const Limits& l) noexcept {
+  // NaN and infinities fail every comparison below as they fail the checks.
+  auto in_range = [](double x) {
+    const double m = std::abs(x);
+    return x == 0.0 || (m >= kMinMagnitude && m <= kMaxMagnitude);
+  };
+  auto limit = [](double x) { return x >= kMinLimit && x <= kMaxLimit; };
+  const bool plain = std::abs(s.p) <= kMaxMagnitude && std::abs(target) <= kMaxMagnitude &&
+                     in_range(s.v) && in_range(s.a) && limit(l.velocity) && limit(l.acceleration) &&
+                     limit(l.deceleration) && limit(l.jerk);
+  if (!plain) {
+    ErrorCode e = check_state(s);
+    if (e == ErrorCode::kNone) e = check_target(target);
+    if (e == ErrorCode::kNone) e = check_limits(l);
+    if (e != ErrorCode::kNone) return e;
+  }
+  return check_start_against(s, l);
+}
+
 // The last line of defence against overflow with extreme (finite) inputs: a profile whose
 // numbers are not all finite is never handed out. x * 0 is 0 for a finite x and NaN otherwise,
 // so one sum replaces a test per value.
 inline bool profile_finite(const Profile& profile) noexcept {
   const KinematicState f = profile.final_state();
-  double zero = profile.duration() * 0.0 + f.p * 0.0 + f.v * 0.0 + f.a * 0.0;
+  // Two lanes at a time (issue 17): a segment's duration, p, v and a lie next to each other.
+  using Pair = double __attribute__((vector_size(16)));
+  static_assert(offsetof(Segment, p) == offsetof(Segment, duration) + sizeof(double) &&
+                offsetof(Segment, a) == offsetof(Segment, v) + sizeof(double));
+  Pair zero = {profile.duration() * 0.0 + f.p * 0.0, f.v * 0.0 + f.a * 0.0};
   for (std::size_t i = 0; i < profile.segment_count(); ++i) {
     const Segment& s = profile.segment(i);
-    zero += (s.p * 0.0 + s.v * 0.0) + (s.a * 0.0 + s.duration * 0.0);
+    Pair first;
+    Pair second;
+    std::memcpy(&first, &s.duration, sizeof first);  // duration, p
+    std::memcpy(&second, &s.v, sizeof second);       // v, a
+    zero += first * 0.0 + second * 0.0;
   }
-  return zero == 0.0;
+  return zero[0] + zero[1] == 0.0;
 }
 
 }  // namespace nc::detail

@@ -27,9 +27,8 @@ Profile build_change(const KinematicState& start, double v1, const detail::Bound
 }  // namespace
 
 Profile plan_velocity(const KinematicState& start, double velocity, const Limits& limits) noexcept {
-  ErrorCode e = detail::check_state(start);
-  if (e == ErrorCode::kNone) e = detail::check_limits(limits);
-  if (e == ErrorCode::kNone) e = detail::check_start_against(start, limits);
+  // (check_plan's target check passes for 0: the checks of the state, the limits and the start.)
+  ErrorCode e = detail::check_plan(start, 0.0, limits);
   if (e == ErrorCode::kNone && !std::isfinite(velocity)) e = ErrorCode::kParameterNotFinite;
   if (e == ErrorCode::kNone &&
       (std::abs(velocity) > limits.velocity || !detail::velocity_in_range(velocity))) {

@@ -11,6 +11,8 @@
 // the path-relative bounds are symmetric under.
 #include "profile/velocity_change.hpp"
 
+#include "profile/push_scan.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -42,6 +44,7 @@ int upward(double v, double a, double v1, const Bounds& b, double sign, Sink& ou
     v = v_end;
   };
   for (int iter = 0; iter < kMaxChangePieces; ++iter) {
+    if (out.stopped()) return n;  // the sink has what it needs (PushScan)
     const bool neg = v < 0.0 || (v == 0.0 && a < 0.0);
     if ((!neg || !cross) && std::abs(a) <= tol_a && v >= v1 - tol_v) {
       // At v1 within rounding. An acceleration left there still ramps to 0 at J (a piece of
@@ -236,16 +239,19 @@ int change(double v0, double a0, double v1, const Bounds& bounds, Sink& out) noe
   return upward(-v0, -a0, -v1, bounds, -1.0, out);
 }
 
-// Where the pieces go: an array, or straight into a profile.
+// Where the pieces go: an array, or straight into a profile (both take the whole change), or
+// plan_position's push scan (PushScan::stopped()).
 struct ArraySink {
   Piece* out;
   void put(const Piece& piece) noexcept { *out++ = piece; }
+  static constexpr bool stopped() noexcept { return false; }
 };
 struct WriterSink {
   ProfileWriter& writer;
   void put(const Piece& piece) noexcept {
     writer.append(piece.t, piece.j, piece.a_end, piece.v_end);
   }
+  static constexpr bool stopped() noexcept { return false; }
 };
 
 }  // namespace
@@ -259,6 +265,11 @@ int velocity_change(double v0, double a0, double v1, const Bounds& bounds,
                     ProfileWriter& writer) noexcept {
   WriterSink sink{writer};
   return change(v0, a0, v1, bounds, sink);
+}
+
+int velocity_change(double v0, double a0, double v1, const Bounds& bounds,
+                    PushScan& scan) noexcept {
+  return change(v0, a0, v1, bounds, scan);
 }
 
 double pieces_distance(double v0, double a0, const Piece* pieces, int count) noexcept {

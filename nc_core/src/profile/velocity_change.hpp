@@ -31,6 +31,11 @@ int velocity_change(double v0, double a0, double v1, const Bounds& bounds, Piece
 int velocity_change(double v0, double a0, double v1, const Bounds& bounds,
                     ProfileWriter& writer) noexcept;
 
+// The same pieces handed to plan_position's push scan (profile/push_scan.hpp), which may stop the
+// walk early: then the pieces so far are returned (the count the scan holds).
+struct PushScan;
+int velocity_change(double v0, double a0, double v1, const Bounds& bounds, PushScan& scan) noexcept;
+
 // Distance travelled along `pieces` from velocity v0 and acceleration a0.
 double pieces_distance(double v0, double a0, const Piece* pieces, int count) noexcept;
 

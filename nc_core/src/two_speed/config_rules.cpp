@@ -11,6 +11,10 @@ namespace nc {
 
 namespace {
 
+// The planner's numeric range (profile/validate.hpp kMaxLimit), which bounds every velocity a
+// servo axis can be commanded.
+constexpr double kMaxTwoSpeedVelocity = 1e12;
+
 // `lower` (at `lower_key`) must not exceed `upper` (named `upper_key`).
 void require_at_most(std::string_view lower_key, double lower, std::string_view upper_key,
                      double upper) {
@@ -30,6 +34,14 @@ void validate_two_speed(const AxisConfig& c) {
   require_at_most("braking_distance_negative", c.braking_distance_negative,
                   "creep_distance_negative", c.creep_distance_negative);
   require_at_most("creep_velocity", c.creep_velocity, "rapid_velocity", c.rapid_velocity);
+  // The plant moves at rapid_velocity without a planner's range check; above the NC's numeric
+  // range its position and its acceleration over a step (ramp time 0) overflow (fuzz finding K11).
+  if (!(c.rapid_velocity <= kMaxTwoSpeedVelocity)) {
+    throw ConfigError("/rapid_velocity",
+                      "must be <= " + config_text::number(kMaxTwoSpeedVelocity) +
+                          " (the NC's numeric range) on a two-speed axis",
+                      config_text::number(c.rapid_velocity));
+  }
   // The return leg of a looping positioning starts at most one braking distance short of the
   // reversal point; it must still be longer than its own braking distance.
   const double both = c.braking_distance_positive + c.braking_distance_negative;
