@@ -50,9 +50,9 @@ bool HliPhase::begin_cycle() noexcept {
 }
 
 plc::ErrorCode HliPhase::refusal(const ServoAxis& axis) noexcept {
-  if (axis.has_error()) return plc::ErrorCode::kAxisInErrorState;
-  if (!axis.controller_enabled()) return plc::ErrorCode::kNoControllerOrFeedEnable;
-  if (axis.external_enabled()) return plc::ErrorCode::kFunctionNotAllowed;
+  if (axis.core().channel_.has_error()) return plc::ErrorCode::kAxisInErrorState;
+  if (!axis.core().channel_.controller_enabled()) return plc::ErrorCode::kNoControllerOrFeedEnable;
+  if (axis.core().stack_.external().enabled()) return plc::ErrorCode::kFunctionNotAllowed;
   return plc::ErrorCode::kNone;
 }
 
@@ -80,13 +80,13 @@ void HliPhase::run(std::span<const std::unique_ptr<ServoAxis>> axes,
     // off too, without a ramp to brake on; losing the enable while the drive moves is an axis
     // error, as during a job. (A target was coupled at the last phase (c): errors_seen_ is
     // that phase's count.)
-    const uint32_t raised = axes[i]->errors_raised();
+    const uint32_t raised = axes[i]->core().errors_raised_;
     const bool new_error = raised != errors_seen_[i];
     errors_seen_[i] = raised;
     if (!stage_.coupled(i)) continue;
-    if (axes[i]->has_error() || new_error) {
+    if (axes[i]->core().channel_.has_error() || new_error) {
       stage_.stop(i);
-    } else if (!axes[i]->controller_enabled()) {
+    } else if (!axes[i]->core().channel_.controller_enabled()) {
       if (dv_[i] != 0.0) pending_[i] = plc::ErrorCode::kControllerEnableMissing;
       stage_.release(i);
     }
