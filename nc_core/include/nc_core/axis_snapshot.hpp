@@ -33,6 +33,25 @@ struct AxisSnapshot {
   bool controller_enabled = false;
   bool feed_enabled_plus = false;
   bool feed_enabled_minus = false;
+  // SPEC C8: while the axis drives its slaves by its actual values, they follow its filtered
+  // actual position instead of its set values (the set values above stay its own: the HLI
+  // stage reads them). Written in the set-value phase, by the axis's GroupErrors.
+  bool slaves_follow_actual = false;
+  double filtered_position = 0.0;
+  double filtered_velocity = 0.0;
+  double filtered_acceleration = 0.0;
+
+  // What a slave follows of this axis (SPEC C1, C6, C8).
+  double followed_position() const noexcept {
+    return slaves_follow_actual ? filtered_position : set_position;
+  }
+  double followed_velocity() const noexcept {
+    return slaves_follow_actual ? filtered_velocity : set_velocity;
+  }
+  double followed_acceleration() const noexcept {
+    return slaves_follow_actual ? filtered_acceleration : set_acceleration;
+  }
+  double followed_jerk() const noexcept { return slaves_follow_actual ? 0.0 : set_jerk; }
 };
 
 }  // namespace nc

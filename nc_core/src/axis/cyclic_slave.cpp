@@ -79,10 +79,10 @@ void SlaveCoupling::step_cyclic_factor(const AxisSnapshot& master) noexcept {
   // the commanded factor in this cycle, but never away from it nor past it.
   const double wanted = (c - f) / s_.cycle_time_;
   double rate = wanted;
-  const double w = master.set_velocity + s_.cycle_time_ * master.set_acceleration;
+  const double w = master.followed_velocity() + s_.cycle_time_ * master.followed_acceleration();
   if (w != 0.0) {
     const double bound = link.acc_bound * (1.0 - kBoundMargin);
-    const double fa = f * master.set_acceleration;
+    const double fa = f * master.followed_acceleration();
     const double lo = std::min((-bound - fa) / w, (bound - fa) / w);
     const double hi = std::max((-bound - fa) / w, (bound - fa) / w);
     rate = std::clamp(std::clamp(wanted, lo, hi), std::min(0.0, wanted), std::max(0.0, wanted));

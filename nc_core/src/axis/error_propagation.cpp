@@ -64,6 +64,7 @@ bool GroupErrors::drives_slaves_by_actual() const noexcept {
 void GroupErrors::publish_for_slaves(AxisSnapshot& snapshot) noexcept {
   if (!drives_slaves_by_actual()) {
     s_.actual_filter_.end();
+    snapshot.slaves_follow_actual = false;
     return;
   }
   // From where the slaves stood in the last cycle, towards the actual position measured then.
@@ -71,10 +72,12 @@ void GroupErrors::publish_for_slaves(AxisSnapshot& snapshot) noexcept {
   s_.actual_filter_.step(s_.drive_.measured_position() - s_.drive_offset_, s_.cycle_time_,
                          s_.config_.actual_value_filter_time,
                          s_.config_.actual_value_velocity_window);
-  snapshot.set_position = s_.actual_filter_.out.p;
-  snapshot.set_velocity = s_.actual_filter_.out.v;
-  snapshot.set_acceleration = s_.actual_filter_.out.a;
-  snapshot.set_jerk = 0.0;
+  // For the slaves only: the axis's own set values, which the HLI stage reads, stay (finding
+  // K14: as the set values they became an HLI phase's q and so the axis's own drive command).
+  snapshot.slaves_follow_actual = true;
+  snapshot.filtered_position = s_.actual_filter_.out.p;
+  snapshot.filtered_velocity = s_.actual_filter_.out.v;
+  snapshot.filtered_acceleration = s_.actual_filter_.out.a;
 }
 
 ErrorCode GroupErrors::push_by_hand(double velocity) noexcept {

@@ -266,7 +266,7 @@ void AxisMotion::generate_set_values(std::span<const AxisSnapshot> snapshots) no
       const AxisSnapshot& master = snapshots[a.slave_link_.master];
       if (a.slave_link_.cyclic) SlaveCoupling(a).step_cyclic_factor(master);
       a.base_ = a.slave_link_.sample(master, a.set_.p);
-      a.set_jerk_ = a.slave_link_.factor * master.set_jerk;
+      a.set_jerk_ = a.slave_link_.factor * master.followed_jerk();
       break;
     }
     case SetValueSource::kHomingJob:

@@ -68,14 +68,16 @@ struct SlaveLink {
   // The slave's set values from its master's set values of this cycle. `set_p` is the slave's
   // set position, used only when the offset is to be taken again.
   KinematicState sample(const AxisSnapshot& m, double set_p) noexcept {
+    const double mp = m.followed_position();
+    const double mv = m.followed_velocity();
     if (retake_offset) {
-      offset = set_p - factor * m.set_position;
+      offset = set_p - factor * mp;
       retake_offset = false;
     }
-    master_p = m.set_position;
-    slave_p = factor * m.set_position + offset;
-    const double a = factor * m.set_acceleration;
-    return KinematicState{slave_p, factor * m.set_velocity, cyclic ? a + rate * m.set_velocity : a};
+    master_p = mp;
+    slave_p = factor * mp + offset;
+    const double a = factor * m.followed_acceleration();
+    return KinematicState{slave_p, factor * mv, cyclic ? a + rate * mv : a};
   }
 };
 
