@@ -86,6 +86,16 @@ class ServoAxis {
   // master), kept until the next call, for CoupleState and the refusal of external setpoints.
   void phase_drive_command(const KinematicState& drive, ErrorCode stop,
                            plc::CoupleState role) noexcept;
+  // The program set values q of this cycle for phase (c): the axis's own (its snapshot may
+  // carry the filtered actual values its slaves follow instead, C8; fuzz finding K14); a
+  // two-speed axis's are its snapshot's.
+  KinematicState program_state(const AxisSnapshot& snapshot) const noexcept {
+    if (two_speed_) {
+      return KinematicState{snapshot.set_position, snapshot.set_velocity,
+                            snapshot.set_acceleration};
+    }
+    return set_;
+  }
   // What the HLI phase reads of the axis before phase (c): an axis error, the controller enable,
   // external setpoint generation enabled.
   bool has_error() const noexcept { return channel_.has_error(); }

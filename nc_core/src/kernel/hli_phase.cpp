@@ -67,9 +67,10 @@ void HliPhase::run(std::span<const std::unique_ptr<ServoAxis>> axes,
                    std::span<const AxisSnapshot> snapshots) noexcept {
   const std::size_t n = axes.size();
   for (std::size_t i = 0; i < n; ++i) {
-    q_[i] = snapshots[i].set_position;
-    qv_[i] = snapshots[i].set_velocity;
-    qa_[i] = snapshots[i].set_acceleration;
+    const KinematicState q = axes[i]->program_state(snapshots[i]);
+    q_[i] = q.p;
+    qv_[i] = q.v;
+    qa_[i] = q.a;
     // The homed bit as last published (AxisConfig::homed_at_start, MC_Home).
     referenced_[i] = plc::test_bit(axes[i]->ref().NcToPlc.StateDWord, plc::kStateHomed);
     refusal_[i] = refusal(*axes[i]);
