@@ -7,7 +7,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "axis/group_errors.hpp"
 #include "axis/servo_axis.hpp"
+#include "homing/axis_homing.hpp"
 #include "kernel/hli_phase.hpp"
 #include "nc_core/config.hpp"
 #include "nc_core/profile.hpp"
@@ -61,7 +63,7 @@ plc::AXIS_REF& Kernel::add_axis(const AxisConfig& config) {
 }
 
 bool Kernel::reference_cam(std::string_view name) const {
-  return find(name).reference_cam();
+  return detail::AxisHoming(find(name).core()).reference_cam();
 }
 
 detail::ServoAxis& Kernel::find(std::string_view name) const {
@@ -84,7 +86,8 @@ const AxisConfig& Kernel::config(std::string_view name) const {
   return find(name).config();
 }
 const plc::NCTOIO_DRIVE_TWO_SPEED& Kernel::two_speed_output(std::string_view name) const {
-  const plc::NCTOIO_DRIVE_TWO_SPEED* image = find(name).two_speed_output();
+  const detail::AxisCore& axis = find(name).core();
+  const plc::NCTOIO_DRIVE_TWO_SPEED* image = axis.two_speed_ ? &axis.two_speed_->output() : nullptr;
   if (image == nullptr) {
     throw ConfigError("/axes", "has this axis, but not of kind two_speed", std::string(name));
   }
@@ -134,20 +137,21 @@ void Kernel::mark_ready_groups() noexcept {
     }
   }
   for (std::size_t i = 0; i < n; ++i) {
-    if (couplings_.group(i) == i) axes_[i]->set_group_ready(group_ready_[i] != 0);
+    if (couplings_.group(i) == i)
+      detail::GroupErrors(axes_[i]->core()).set_group_ready(group_ready_[i] != 0);
   }
 }
 
 plc::ErrorCode Kernel::push_by_hand(std::size_t axis, double velocity) noexcept {
   if (axis >= axes_.size()) return plc::ErrorCode::kInvalidAxisReference;
-  return axes_[axis]->push_by_hand(velocity);
+  return detail::GroupErrors(axes_[axis]->core()).push_by_hand(velocity);
 }
 
 void Kernel::react_in_groups() noexcept {
   // SPEC C7 (seed 000 §3.1): the group reaction of an axis's own error reaches every axis of its
   // master/slave group as the group is in this cycle, with the faulty axis's code. INSTANTANEOUS:
   // in the cycle the error is raised; DELAYED: when the faulty axis's delay has run out
-  // (ServoAxis::group_reaction_due). Errors are rare: the scan over the group's axes runs only
+  // (GroupErrors::group_reaction_due). Errors are rare: the scan over the group's axes runs only
   // for an axis whose reaction is due.
   const std::size_t n = axes_.size();
   for (std::size_t i = 0; i < n; ++i) {
@@ -157,7 +161,7 @@ void Kernel::react_in_groups() noexcept {
     for (std::size_t j = 0; j < n; ++j) {
       if (j == i || couplings_.group(j) != group) continue;
       if (snapshots_[j].error != plc::ErrorCode::kNone) continue;
-      axes_[j]->group_error(code);
+      detail::GroupErrors(axes_[j]->core()).group_error(code);
       snapshots_[j].error = code;
       snapshots_[j].error_event = true;
     }

@@ -113,7 +113,7 @@ class Kernel {
   // Phase (e), with couplings: an axis's new error reaches its whole group (SPEC C7).
   void react_in_groups() noexcept;
   // After all phases, with couplings: tells each group's head whether its group has no error and
-  // every axis enabled (the precondition of SPEC C8 case 2, ServoAxis::follows_by_hand()). An
+  // every axis enabled (the precondition of SPEC C8 case 2, GroupErrors::follows_by_hand()). An
   // uncoupled axis (a group of its own) knows it from its own monitor phase.
   void mark_ready_groups() noexcept;
 

@@ -7,13 +7,14 @@
 // the speed from which the next positioning can still stop at its own target, and within the
 // speeds the running table can reach at its target without moving backwards (found by
 // bisection between the wanted speed and the speed the axis has now).
-#include "axis/command_buffer.hpp"
+#include "axis/buffered_commands.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "axis/servo_axis.hpp"
+#include "axis/axis_commands.hpp"
+#include "axis/command_buffer.hpp"
 
 namespace nc::detail {
 
@@ -65,44 +66,48 @@ double blend_velocity(int32_t mode, double previous, double next) noexcept {
   }
 }
 
-ErrorCode ServoAxis::buffer_command(const plc::Command& command, CouplingPort& port) noexcept {
+ErrorCode BufferedCommands::buffer_command(const plc::Command& command,
+                                           CouplingPort& port) noexcept {
   // The command's own checks now (a refusal leaves the waiting one and the running job as
   // they are); what depends on where it starts (targets, enables) when it takes over.
   if (command.type == CommandType::kHalt) {
-    if (const ErrorCode code = check_halt_or_stop(command); code != ErrorCode::kNone) return code;
+    if (const ErrorCode code = AxisCommands(s_).check_halt_or_stop(command);
+        code != ErrorCode::kNone) {
+      return code;
+    }
   } else {
     Limits limits;
     const bool has_position = command.type != CommandType::kMoveVelocity;
-    if (const ErrorCode code = check_start(command, has_position, limits);
+    if (const ErrorCode code = AxisCommands(s_).check_start(command, has_position, limits);
         code != ErrorCode::kNone) {
       return code;
     }
   }
-  if (buffer_.waiting) return ErrorCode::kBufferFull;
-  buffer_.command = command;
-  buffer_.waiting = true;
-  channel_.answer(command.number, CommandState::kBuffered);
+  if (s_.buffer_.waiting) return ErrorCode::kBufferFull;
+  s_.buffer_.command = command;
+  s_.buffer_.waiting = true;
+  s_.channel_.answer(command.number, CommandState::kBuffered);
   if (ready_for_next()) {
     take_next(port);
   } else if (blending_mode(command.buffer_mode)) {
-    plan_blend(std::abs(job_.target_velocity()));
+    plan_blend(std::abs(s_.job_.target_velocity()));
   }
   return ErrorCode::kNone;
 }
 
-bool ServoAxis::ready_for_next() const noexcept {
+bool BufferedCommands::ready_for_next() const noexcept {
   // Behind MC_Home: when the homing is Done (it ends at rest, so a blend waits as MC_Buffered).
-  if (homing_.active()) return false;
-  switch (job_.kind()) {
+  if (s_.homing_.active()) return false;
+  switch (s_.job_.kind()) {
     case JobKind::kNone:
       return true;
     case JobKind::kPosition:
-      return job_.final_table() &&
-             (job_.generation_ended() || job_.passes_in_next_cycle(cycle_time_));
+      return s_.job_.final_table() &&
+             (s_.job_.generation_ended() || s_.job_.passes_in_next_cycle(s_.cycle_time_));
     case JobKind::kHalt:
-      return job_.generation_ended();
+      return s_.job_.generation_ended();
     case JobKind::kVelocity:
-      return job_.velocity_reached();
+      return s_.job_.velocity_reached();
     case JobKind::kStop:
     case JobKind::kEmergencyStop:
       return false;  // a stop locks, an error ramp drops the buffer: never reached
@@ -110,75 +115,72 @@ bool ServoAxis::ready_for_next() const noexcept {
   return false;
 }
 
-void ServoAxis::run_buffer(CouplingPort& port) noexcept {
-  if (buffer_.waiting && ready_for_next()) take_next(port);
+void BufferedCommands::run_buffer(CouplingPort& port) noexcept {
+  if (s_.buffer_.waiting && ready_for_next()) take_next(port);
   // A pass whose next command was refused when taking over (or dropped) must not run away.
-  if (!buffer_.waiting && job_.passing() && job_.generation_ended()) stop_pass();
+  if (!s_.buffer_.waiting && s_.job_.passing() && s_.job_.generation_ended()) stop_pass();
 }
 
-void ServoAxis::take_next(CouplingPort& port) noexcept {
-  plc::Command next = buffer_.command;
-  buffer_.waiting = false;
+void BufferedCommands::take_next(CouplingPort& port) noexcept {
+  plc::Command next = s_.buffer_.command;
+  s_.buffer_.waiting = false;
   next.buffer_mode = plc::MC_Aborting;
   // Relative and modulo targets count from the running positioning's target (where a buffered
   // command starts), not from where the set values are when it takes over.
-  const bool after_positioning = job_.kind() == JobKind::kPosition;
-  const double base = after_positioning ? job_.target() : set_.p;
+  const bool after_positioning = s_.job_.kind() == JobKind::kPosition;
+  const double base = after_positioning ? s_.job_.target() : s_.set_.p;
   ErrorCode code = ErrorCode::kNone;
   if (next.type == CommandType::kMoveRelative) {
     next.type = CommandType::kMoveAbsolute;
     next.position = base + next.position;
   } else if (next.type == CommandType::kMoveModulo) {
     double end = 0.0;
-    code = modulo_end(next, base, after_positioning ? job_.direction() : current_direction(), end);
+    code = AxisCommands(s_).modulo_end(
+        next, base, after_positioning ? s_.job_.direction() : s_.current_direction(), end);
     next.type = CommandType::kMoveAbsolute;
     next.position = end;
   }
   // The running command is done here (a velocity job is aborted by the take-over itself).
-  if (job_.kind() == JobKind::kPosition || job_.kind() == JobKind::kHalt) {
-    if (channel_.runs(job_.number())) channel_.answer_current(CommandState::kDone);
+  if (s_.job_.kind() == JobKind::kPosition || s_.job_.kind() == JobKind::kHalt) {
+    if (s_.channel_.runs(s_.job_.number())) s_.channel_.answer_current(CommandState::kDone);
   }
   if (code == ErrorCode::kNone) {
-    const KinematicState basic = basic_state();
-    const bool exact = job_.passes_in_next_cycle(cycle_time_) && basic.p == set_.p &&
-                       basic.v == set_.v && basic.a == set_.a;
+    const KinematicState basic = s_.basic_state();
+    const bool exact = s_.job_.passes_in_next_cycle(s_.cycle_time_) && basic.p == s_.set_.p &&
+                       basic.v == s_.set_.v && basic.a == s_.set_.a;
     if (exact) {
       // The pass ends within this cycle: the next command starts from the pass's end state at
       // its end time, so its first sample lies between 0 and T after the target.
-      const KinematicState now = set_;
-      const double offset = job_.sample_time(cycle_time_) - job_.table_duration();
-      set_ = job_.table_end();
-      code = handle_now(next, port);
-      set_ = now;
-      if (code == ErrorCode::kNone && job_.number() == next.number) job_.set_time_offset(offset);
+      const KinematicState now = s_.set_;
+      const double offset = s_.job_.sample_time(s_.cycle_time_) - s_.job_.table_duration();
+      s_.set_ = s_.job_.table_end();
+      code = AxisCommands(s_).handle_now(next, port);
+      s_.set_ = now;
+      if (code == ErrorCode::kNone && s_.job_.number() == next.number) {
+        s_.job_.set_time_offset(offset);
+      }
     } else {
-      code = handle_now(next, port);
+      code = AxisCommands(s_).handle_now(next, port);
     }
   }
   if (code != ErrorCode::kNone) {
-    channel_.answer(next.number, CommandState::kError, plc::to_id(code));
-    if (job_.passing()) stop_pass();
+    s_.channel_.answer(next.number, CommandState::kError, plc::to_id(code));
+    if (s_.job_.passing()) stop_pass();
   }
 }
 
-void ServoAxis::drop_buffer(plc::CommandState state, uint32_t code) noexcept {
-  if (!buffer_.waiting) return;
-  buffer_.waiting = false;
-  channel_.answer(buffer_.command.number, state, code);
+void BufferedCommands::stop_pass() noexcept {
+  s_.scratch_ = plan_stop(s_.set_, s_.job_.limits().deceleration, s_.job_.limits().jerk);
+  if (!s_.scratch_.ok()) return;
+  s_.job_.replan(s_.scratch_, true);
+  s_.job_.set_target(s_.scratch_.final_state().p);
+  s_.job_.set_target_velocity(0.0);
+  s_.target_ = s_.scratch_.final_state().p;
+  s_.monitors_.reset_windows();
 }
 
-void ServoAxis::stop_pass() noexcept {
-  scratch_ = plan_stop(set_, job_.limits().deceleration, job_.limits().jerk);
-  if (!scratch_.ok()) return;
-  job_.replan(scratch_, true);
-  job_.set_target(scratch_.final_state().p);
-  job_.set_target_velocity(0.0);
-  target_ = scratch_.final_state().p;
-  monitors_.reset_windows();
-}
-
-double ServoAxis::next_direction(const plc::Command& next, double from, double direction,
-                                 double& end) const noexcept {
+double BufferedCommands::next_direction(const plc::Command& next, double from, double direction,
+                                        double& end) const noexcept {
   end = std::numeric_limits<double>::quiet_NaN();
   switch (next.type) {
     case CommandType::kMoveAbsolute:
@@ -188,7 +190,7 @@ double ServoAxis::next_direction(const plc::Command& next, double from, double d
       end = from + next.position;
       break;
     case CommandType::kMoveModulo:
-      if (modulo_end(next, from, direction, end) != ErrorCode::kNone) return 0.0;
+      if (AxisCommands(s_).modulo_end(next, from, direction, end) != ErrorCode::kNone) return 0.0;
       break;
     case CommandType::kMoveVelocity:
       if (next.direction == plc::MC_Current_Direction) return direction;
@@ -201,27 +203,30 @@ double ServoAxis::next_direction(const plc::Command& next, double from, double d
   return sign_of(end - from);
 }
 
-void ServoAxis::plan_blend(double level) noexcept {
-  if (!buffer_.waiting || !blending_mode(buffer_.command.buffer_mode)) return;
-  if (job_.kind() != JobKind::kPosition || !job_.final_table() || job_.generation_ended()) return;
+void BufferedCommands::plan_blend(double level) noexcept {
+  if (!s_.buffer_.waiting || !blending_mode(s_.buffer_.command.buffer_mode)) return;
+  if (s_.job_.kind() != JobKind::kPosition || !s_.job_.final_table() ||
+      s_.job_.generation_ended()) {
+    return;
+  }
   if (!(level > 0.0)) return;
-  const plc::Command& next = buffer_.command;
-  const KinematicState from = basic_state();
+  const plc::Command& next = s_.buffer_.command;
+  const KinematicState from = s_.basic_state();
   // The job's end, moved by what ended superpositions left (as apply_override()).
-  const double target = job_.target() + (from.p - job_.state().p);
-  const double direction = job_.direction();
+  const double target = s_.job_.target() + (from.p - s_.job_.state().p);
+  const double direction = s_.job_.direction();
   double end = 0.0;
   if (next_direction(next, target, direction, end) != direction) return;  // reversal: at rest
 
-  const double factor = level / job_.user_velocity();  // the override in force
+  const double factor = level / s_.job_.user_velocity();  // the override in force
   double wanted =
-      std::min(blend_velocity(next.buffer_mode, job_.user_velocity(), next.velocity) * factor,
-               config_.max_velocity);
+      std::min(blend_velocity(next.buffer_mode, s_.job_.user_velocity(), next.velocity) * factor,
+               s_.config_.max_velocity);
   if (std::isfinite(end)) {
     // Not faster than the next positioning can still stop from before its own end.
     const double room = std::abs(end - target);
-    const double dec = next.deceleration > 0.0 ? next.deceleration : config_.deceleration;
-    const double jerk = next.jerk > 0.0 ? next.jerk : config_.jerk;
+    const double dec = next.deceleration > 0.0 ? next.deceleration : s_.config_.deceleration;
+    const double jerk = next.jerk > 0.0 ? next.jerk : s_.config_.jerk;
     if (stop_distance(wanted, dec, jerk) > room) {
       double fits = 0.0;
       double too_fast = wanted;
@@ -234,7 +239,7 @@ void ServoAxis::plan_blend(double level) noexcept {
   }
   if (!(wanted > 0.0)) return;
 
-  Limits limits = job_.limits();
+  Limits limits = s_.job_.limits();
   limits.velocity = level;
   double speed = wanted;
   if (!plan_pass(from, target, direction, speed, limits)) {
@@ -250,18 +255,18 @@ void ServoAxis::plan_blend(double level) noexcept {
     speed = good;
     if (!plan_pass(from, target, direction, speed, limits)) return;
   }
-  job_.replan(scratch_, true);
-  stack_.rebase();  // planned from basic_state(): the held offset is in the table now
-  job_.set_target(target);
-  job_.set_target_velocity(direction * level);
-  target_ = target;
+  s_.job_.replan(s_.scratch_, true);
+  s_.stack_.rebase();  // planned from s_.basic_state(): the held offset is in the table now
+  s_.job_.set_target(target);
+  s_.job_.set_target_velocity(direction * level);
+  s_.target_ = target;
 }
 
-bool ServoAxis::plan_pass(const KinematicState& from, double target, double direction, double speed,
-                          const Limits& limits) noexcept {
+bool BufferedCommands::plan_pass(const KinematicState& from, double target, double direction,
+                                 double speed, const Limits& limits) noexcept {
   if (speed <= limits.velocity) {
-    scratch_ = plan_position(from, target, direction * speed, limits);
-    return scratch_.ok() && moves_only_along(scratch_, direction);
+    s_.scratch_ = plan_position(from, target, direction * speed, limits);
+    return s_.scratch_.ok() && moves_only_along(s_.scratch_, direction);
   }
   // Faster than the running level: hold the level, then speed up so that the speed is reached
   // exactly at the target (the speed-up is the last part of the running command).
@@ -273,18 +278,18 @@ bool ServoAxis::plan_pass(const KinematicState& from, double target, double dire
     const Profile lead =
         plan_position(from, target - rise.final_state().p, direction * limits.velocity, limits);
     if (lead.ok() && moves_only_along(lead, direction)) {
-      scratch_.reset(from);
-      if (append_all(scratch_, lead) && append_all(scratch_, rise)) {
+      s_.scratch_.reset(from);
+      if (append_all(s_.scratch_, lead) && append_all(s_.scratch_, rise)) {
         const KinematicState exact{target, direction * speed, 0.0};
-        scratch_.close(&exact, true);
-        scratch_.anchor_to_end(lead.segment_count());
+        s_.scratch_.close(&exact, true);
+        s_.scratch_.anchor_to_end(lead.segment_count());
         return true;
       }
     }
   }
   // Too short to hold the level first: the quickest way to the speed at the target.
-  scratch_ = plan_position(from, target, direction * speed, up);
-  return scratch_.ok() && moves_only_along(scratch_, direction);
+  s_.scratch_ = plan_position(from, target, direction * speed, up);
+  return s_.scratch_.ok() && moves_only_along(s_.scratch_, direction);
 }
 
 }  // namespace nc::detail

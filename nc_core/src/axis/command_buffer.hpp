@@ -5,12 +5,13 @@
 // is answered kActive. A second one while one waits is refused (kBufferFull); an aborting
 // command, a stop or an axis error drops the waiting one.
 //
-// Plain data plus pure helpers; the axis's use of it is in command_buffer.cpp (ServoAxis).
-// Cycle functions only: noexcept, no allocation.
+// The waiting command plus pure helpers; when it takes over is BufferedCommands'
+// (buffered_commands.hpp). Cycle functions only: noexcept, no allocation.
 #pragma once
 
 #include <cstdint>
 
+#include "axis/axis_channel.hpp"
 #include "plc_interface/command.hpp"
 
 namespace nc::detail {
@@ -18,6 +19,14 @@ namespace nc::detail {
 struct CommandBuffer {
   plc::Command command{};
   bool waiting = false;
+
+  // The waiting command, if any, is answered `state` on `channel` (an aborting command, a stop,
+  // an error) and leaves the buffer.
+  void drop(AxisChannel& channel, plc::CommandState state, uint32_t code = 0) noexcept {
+    if (!waiting) return;
+    waiting = false;
+    channel.answer(command.number, state, code);
+  }
 };
 
 // A BufferMode value the NC knows (MC_Aborting … MC_BlendingHigh).

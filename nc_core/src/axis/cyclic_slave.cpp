@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "axis/servo_axis.hpp"
+#include "axis/slave_coupling.hpp"
 
 namespace nc::detail {
 
@@ -16,7 +17,7 @@ constexpr double kBoundMargin = 1e-12;
 
 }  // namespace
 
-ErrorCode ServoAxis::gear_in_dyn(const plc::Command& command, CouplingPort& port) noexcept {
+ErrorCode SlaveCoupling::gear_in_dyn(const plc::Command& command, CouplingPort& port) noexcept {
   // A coupled slave never gets here: handle() refuses MC_GearInDyn on it (0x424E).
   if (const ErrorCode code = check_gear_ratio(command.ratio); code != ErrorCode::kNone) {
     return code;
@@ -30,36 +31,39 @@ ErrorCode ServoAxis::gear_in_dyn(const plc::Command& command, CouplingPort& port
   if (const ErrorCode code = check_new_coupling(master_index, port); code != ErrorCode::kNone) {
     return code;
   }
-  const double master_acceleration = port.axes[master_index]->max_acceleration(port);
+  const double master_acceleration =
+      SlaveCoupling(port.axes[master_index]->core()).max_acceleration(port);
   if (!couple_new(command, master_index, port)) return ErrorCode::kCouplingLoop;
-  slave_link_.cyclic = true;
-  slave_link_.acc_bound = command.acceleration;
-  slave_link_.master_acceleration = master_acceleration;
+  s_.slave_link_.cyclic = true;
+  s_.slave_link_.acc_bound = command.acceleration;
+  s_.slave_link_.master_acceleration = master_acceleration;
   // Seed 000 §3.3: stable for AccBound >= max|Cf| × max(A+, A-) of the master. Accepted below
   // it, with a warning (the same check runs for every new factor the PLC commands).
   if (command.acceleration < std::abs(command.ratio) * master_acceleration) {
-    channel_.warn(Warning::kAccBoundBelowStability);
+    s_.channel_.warn(Warning::kAccBoundBelowStability);
   }
   return ErrorCode::kNone;  // answered kActive; the block shows InGear from NcToPlc.GearRatio
 }
 
-double ServoAxis::max_acceleration(const CouplingPort& port) const noexcept {
-  if (!slave_link_.coupled) return std::max(config_.acceleration, config_.deceleration);
-  const double factor = std::max(std::abs(slave_link_.factor), std::abs(slave_link_.commanded));
-  const double scaled = factor * port.axes[slave_link_.master]->max_acceleration(port);
-  return slave_link_.cyclic ? std::max(slave_link_.acc_bound, scaled) : scaled;
+double SlaveCoupling::max_acceleration(const CouplingPort& port) const noexcept {
+  if (!s_.slave_link_.coupled) return std::max(s_.config_.acceleration, s_.config_.deceleration);
+  const double factor =
+      std::max(std::abs(s_.slave_link_.factor), std::abs(s_.slave_link_.commanded));
+  const double scaled =
+      factor * SlaveCoupling(port.axes[s_.slave_link_.master]->core()).max_acceleration(port);
+  return s_.slave_link_.cyclic ? std::max(s_.slave_link_.acc_bound, scaled) : scaled;
 }
 
-void ServoAxis::step_cyclic_factor(const AxisSnapshot& master) noexcept {
-  SlaveLink& link = slave_link_;
-  const double written = channel_.ref().PlcToNc.GearRatio1;
+void SlaveCoupling::step_cyclic_factor(const AxisSnapshot& master) noexcept {
+  SlaveLink& link = s_.slave_link_;
+  const double written = s_.channel_.ref().PlcToNc.GearRatio1;
   if (written != link.commanded) {
     if (check_gear_ratio(written) != ErrorCode::kNone) {
-      channel_.warn(Warning::kGearRatio1NotTaken);  // the factor commanded before stays
+      s_.channel_.warn(Warning::kGearRatio1NotTaken);  // the factor commanded before stays
     } else {
       link.commanded = written;
       if (link.acc_bound < std::abs(written) * link.master_acceleration) {
-        channel_.warn(Warning::kAccBoundBelowStability);
+        s_.channel_.warn(Warning::kAccBoundBelowStability);
       }
     }
   }
@@ -73,9 +77,9 @@ void ServoAxis::step_cyclic_factor(const AxisSnapshot& master) noexcept {
   //   a = f'·am + r·vm = f·am + r·(vm + T·am).
   // Every r with |a| <= AccBound is allowed; of those, the one closest to the rate that reaches
   // the commanded factor in this cycle, but never away from it nor past it.
-  const double wanted = (c - f) / cycle_time_;
+  const double wanted = (c - f) / s_.cycle_time_;
   double rate = wanted;
-  const double w = master.set_velocity + cycle_time_ * master.set_acceleration;
+  const double w = master.set_velocity + s_.cycle_time_ * master.set_acceleration;
   if (w != 0.0) {
     const double bound = link.acc_bound * (1.0 - kBoundMargin);
     const double fa = f * master.set_acceleration;
@@ -84,7 +88,7 @@ void ServoAxis::step_cyclic_factor(const AxisSnapshot& master) noexcept {
     rate = std::clamp(std::clamp(wanted, lo, hi), std::min(0.0, wanted), std::max(0.0, wanted));
   }
   // Reaching it: exactly the commanded factor (bit for bit), not f + r·T rounded.
-  link.set_factor(rate == wanted ? c : f + rate * cycle_time_, rate);
+  link.set_factor(rate == wanted ? c : f + rate * s_.cycle_time_, rate);
 }
 
 }  // namespace nc::detail

@@ -3,7 +3,7 @@
 // actual-value coupling". The group reaction itself is the kernel's (Kernel::react_in_groups);
 // this file is what one axis knows: its own mode and delay, its local reaction, bit 6, and what
 // its slaves follow.
-#include "axis/servo_axis.hpp"
+#include "axis/group_errors.hpp"
 
 #include <cmath>
 
@@ -11,89 +11,95 @@ namespace nc::detail {
 
 using plc::CommandState;
 
-void ServoAxis::begin_error_propagation() noexcept {
-  const bool in_group = slave_link_.coupled || slave_link_.detached || slave_count_ > 0;
-  const bool delayed = config_.error_propagation_mode == ErrorPropagation::kDelayed && in_group &&
-                       config_.kind != AxisKind::kTwoSpeed;
+void GroupErrors::begin_error_propagation() noexcept {
+  const bool in_group = s_.slave_link_.coupled || s_.slave_link_.detached || s_.slave_count_ > 0;
+  const bool delayed = s_.config_.error_propagation_mode == ErrorPropagation::kDelayed &&
+                       in_group && s_.config_.kind != AxisKind::kTwoSpeed;
   const uint64_t cycles =
-      delayed ? delay_cycles(config_.error_propagation_delay, cycle_time_) : uint64_t{0};
-  propagation_.start(cycles);
-  if (cycles == 0 || !slave_link_.coupled) return;
+      delayed ? delay_cycles(s_.config_.error_propagation_delay, s_.cycle_time_) : uint64_t{0};
+  s_.propagation_.start(cycles);
+  if (cycles == 0 || !s_.slave_link_.coupled) return;
   // The local reaction of a slave: it leaves its master's coupling and stops on its own
   // emergency ramp (raise_error() goes on as for a master); its own slaves keep following it.
-  slave_link_.coupled = false;
-  slave_link_.detached = true;
+  s_.slave_link_.coupled = false;
+  s_.slave_link_.detached = true;
 }
 
-bool ServoAxis::group_reaction_due() noexcept {
-  return propagation_.step(error_event_);
-}
-
-ErrorCode ServoAxis::release_detached(const plc::Command& command, CouplingPort& port) noexcept {
-  port.graph.decouple(index_);
-  --port.axes[slave_link_.master]->slave_count_;
-  slave_link_.detached = false;
-  if (channel_.runs(slave_link_.command)) channel_.answer_current(CommandState::kDone);
-  channel_.answer(command.number, CommandState::kDone);
-  return ErrorCode::kNone;
-}
-
-bool ServoAxis::follows_by_hand() const noexcept {
+bool GroupErrors::follows_by_hand() const noexcept {
   // Only the head of a group: a master that is no slave (nor a slave that left on an error).
   // (No slaves first: that is the steady cycle's answer.)
-  if (slave_count_ == 0 || slave_link_.coupled || slave_link_.detached) return false;
-  if (!config_.couple_slave_to_actual_values || config_.kind != AxisKind::kContinuous) return false;
-  if (channel_.controller_enabled() || channel_.has_error()) return false;
-  return by_hand_ || group_ready_;
+  if (s_.slave_count_ == 0 || s_.slave_link_.coupled || s_.slave_link_.detached) return false;
+  if (!s_.config_.couple_slave_to_actual_values || s_.config_.kind != AxisKind::kContinuous) {
+    return false;
+  }
+  if (s_.channel_.controller_enabled() || s_.channel_.has_error()) return false;
+  return s_.by_hand_ || s_.group_ready_;
 }
 
-bool ServoAxis::update_by_hand() noexcept {
+bool GroupErrors::update_by_hand() noexcept {
   if (!follows_by_hand()) {
     end_by_hand();
     return false;
   }
-  if (!by_hand_) {
-    by_hand_ = true;
+  if (!s_.by_hand_) {
+    s_.by_hand_ = true;
     // The master's own command ends without an error: the group follows its actual values now.
-    if (job_.active() && channel_.runs(job_.number())) {
-      channel_.answer_current(CommandState::kAborted);
+    if (s_.job_.active() && s_.channel_.runs(s_.job_.number())) {
+      s_.channel_.answer_current(CommandState::kAborted);
     }
-    job_.clear();
-    drop_buffer(CommandState::kAborted);
+    s_.job_.clear();
+    s_.buffer_.drop(s_.channel_, CommandState::kAborted);
   }
   return true;
 }
 
-bool ServoAxis::drives_slaves_by_actual() const noexcept {
-  if (slave_count_ == 0 || !config_.couple_slave_to_actual_values) return false;
-  if (config_.kind == AxisKind::kTwoSpeed) return false;
-  if (by_hand_) return true;  // case 2
+bool GroupErrors::drives_slaves_by_actual() const noexcept {
+  if (s_.slave_count_ == 0 || !s_.config_.couple_slave_to_actual_values) return false;
+  if (s_.config_.kind == AxisKind::kTwoSpeed) return false;
+  if (s_.by_hand_) return true;  // case 2
   // Case 1: the axis's own error in DELAYED mode, until MC_Reset.
-  return config_.error_propagation_mode == ErrorPropagation::kDelayed && channel_.has_error();
+  return s_.config_.error_propagation_mode == ErrorPropagation::kDelayed && s_.channel_.has_error();
 }
 
-void ServoAxis::publish_for_slaves(AxisSnapshot& snapshot) noexcept {
+void GroupErrors::publish_for_slaves(AxisSnapshot& snapshot) noexcept {
   if (!drives_slaves_by_actual()) {
-    actual_filter_.end();
+    s_.actual_filter_.end();
     return;
   }
   // From where the slaves stood in the last cycle, towards the actual position measured then.
-  if (!actual_filter_.active) actual_filter_.begin(previous_set_position_);
-  actual_filter_.step(drive_.measured_position() - drive_offset_, cycle_time_,
-                      config_.actual_value_filter_time, config_.actual_value_velocity_window);
-  snapshot.set_position = actual_filter_.out.p;
-  snapshot.set_velocity = actual_filter_.out.v;
-  snapshot.set_acceleration = actual_filter_.out.a;
+  if (!s_.actual_filter_.active) s_.actual_filter_.begin(s_.previous_set_position_);
+  s_.actual_filter_.step(s_.drive_.measured_position() - s_.drive_offset_, s_.cycle_time_,
+                         s_.config_.actual_value_filter_time,
+                         s_.config_.actual_value_velocity_window);
+  snapshot.set_position = s_.actual_filter_.out.p;
+  snapshot.set_velocity = s_.actual_filter_.out.v;
+  snapshot.set_acceleration = s_.actual_filter_.out.a;
   snapshot.set_jerk = 0.0;
 }
 
-ErrorCode ServoAxis::push_by_hand(double velocity) noexcept {
+ErrorCode GroupErrors::push_by_hand(double velocity) noexcept {
   if (!std::isfinite(velocity)) return ErrorCode::kParameterNotFinite;
-  if (config_.kind != AxisKind::kContinuous) return ErrorCode::kAxisKindNotAllowed;
-  if (std::abs(velocity) > config_.max_velocity) return ErrorCode::kVelocityNotAllowed;
-  if (channel_.controller_enabled()) return ErrorCode::kPushByHandControllerEnabled;
-  hand_velocity_ = velocity;
+  if (s_.config_.kind != AxisKind::kContinuous) return ErrorCode::kAxisKindNotAllowed;
+  if (std::abs(velocity) > s_.config_.max_velocity) return ErrorCode::kVelocityNotAllowed;
+  if (s_.channel_.controller_enabled()) return ErrorCode::kPushByHandControllerEnabled;
+  s_.hand_velocity_ = velocity;
   return ErrorCode::kNone;
+}
+
+void GroupErrors::reset_error() noexcept {
+  s_.channel_.clear_warnings();
+  if (!s_.channel_.has_error()) return;
+  s_.channel_.clear_error();
+  s_.propagation_.cancel();  // C7: a reset before the delay has run out: no group reaction
+  if (!s_.job_.active() && !s_.slave_link_.coupled) {
+    // The axis holds where it stands: no following error is carried over into the next start.
+    s_.set_ = KinematicState{s_.drive_.measured_position() - s_.drive_offset_, 0.0, 0.0};
+    // The drive position d steps to the actual one too: no feed-forward kick from that step.
+    s_.previous_drive_position_ = s_.drive_.measured_position();
+    s_.set_jerk_ = 0.0;
+    s_.target_ = s_.set_.p;
+    s_.monitors_.reset_windows();
+  }
 }
 
 }  // namespace nc::detail

@@ -20,7 +20,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "axis/servo_axis.hpp"
+#include "axis/axis_commands.hpp"
 
 namespace nc::detail {
 
@@ -32,28 +32,28 @@ constexpr double kMaxModuloTurns = 1'000'000.0;
 
 }  // namespace
 
-ErrorCode ServoAxis::start_modulo(const plc::Command& command) noexcept {
+ErrorCode AxisCommands::start_modulo(const plc::Command& command) noexcept {
   Limits limits;
   if (const ErrorCode code = check_start(command, true, limits); code != ErrorCode::kNone) {
     return code;
   }
   // Where the axis comes to rest on the shortest stop: from there on, no reversal is needed.
-  double from = set_.p;
-  if (set_.v != 0.0 || set_.a != 0.0) {
-    scratch_ = plan_stop(set_, limits.deceleration, limits.jerk);
-    if (!scratch_.ok()) return scratch_.error();
-    from = scratch_.final_state().p;
+  double from = s_.set_.p;
+  if (s_.set_.v != 0.0 || s_.set_.a != 0.0) {
+    s_.scratch_ = plan_stop(s_.set_, limits.deceleration, limits.jerk);
+    if (!s_.scratch_.ok()) return s_.scratch_.error();
+    from = s_.scratch_.final_state().p;
   }
   double end = 0.0;
-  if (const ErrorCode code = modulo_end(command, from, current_direction(), end);
+  if (const ErrorCode code = modulo_end(command, from, s_.current_direction(), end);
       code != ErrorCode::kNone) {
     return code;
   }
   return start_to_target(command.number, end, limits);
 }
 
-ErrorCode ServoAxis::modulo_end(const plc::Command& command, double from, double moving,
-                                double& end) const noexcept {
+ErrorCode AxisCommands::modulo_end(const plc::Command& command, double from, double moving,
+                                   double& end) const noexcept {
   const double position = command.position;
   double direction = 0.0;
   switch (command.direction) {
@@ -72,11 +72,11 @@ ErrorCode ServoAxis::modulo_end(const plc::Command& command, double from, double
     default:
       return ErrorCode::kDirectionInvalid;
   }
-  const double factor = config_.modulo_factor;
+  const double factor = s_.config_.modulo_factor;
   const double turns = std::floor(std::abs(position) / factor);
   if (!(turns <= kMaxModuloTurns)) return ErrorCode::kModuloTargetInvalid;
 
-  const double tolerance = std::max(config_.encoder_increment, 1e-9 * factor);
+  const double tolerance = std::max(s_.config_.encoder_increment, 1e-9 * factor);
   // The nearest ends congruent to P ahead of and behind `from` (P + F·m, m whole).
   const double ahead = position + factor * std::ceil((from - tolerance - position) / factor);
   const double behind = position + factor * std::floor((from + tolerance - position) / factor);

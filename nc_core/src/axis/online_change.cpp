@@ -30,7 +30,8 @@
 // MC_NewPos: deletes it — seed 000 §2.4 "Event 1 … 4").
 #include <cmath>
 
-#include "axis/servo_axis.hpp"
+#include "axis/buffered_commands.hpp"
+#include "axis/online_change.hpp"
 #include "profile/validate.hpp"
 
 namespace nc::detail {
@@ -42,63 +43,48 @@ constexpr int kVelocityAttempts = 8;
 
 }  // namespace
 
-void ServoAxis::run_online_functions() noexcept {
-  // Only a running motion job: no override while a stop (Halt, Stop, error ramp) is active.
-  if (!channel_.controller_enabled() || channel_.has_error() || !job_.is_motion()) return;
-  bool replanned = false;
-  Activation& activation = job_.activation();
-  if (job_.kind() == JobKind::kPosition && activation.armed) {
-    const bool due =
-        activation.immediate || (activation.direction * (set_.p - activation.position) >= 0.0 &&
-                                 activation.direction * set_.v > 0.0);
-    if (due && !job_.in_brake_phase(cycle_time_)) {
-      activation.armed = false;
-      replanned = activate_velocity(activation.velocity);
-    }
-  }
-  if (!replanned && job_.override_value() != job_.handled_override()) apply_override();
+bool OnlineChange::stop_active() const noexcept {
+  return s_.locked_ || s_.job_.kind() == JobKind::kHalt || s_.job_.kind() == JobKind::kStop;
 }
 
-bool ServoAxis::stop_active() const noexcept {
-  return locked_ || job_.kind() == JobKind::kHalt || job_.kind() == JobKind::kStop;
-}
-
-ErrorCode ServoAxis::check_new_target(double target) const noexcept {
+ErrorCode OnlineChange::check_new_target(double target) const noexcept {
   // Beyond the planner's range (profile/validate.hpp) or outside the software limits: 0x4222.
-  if (!within_magnitude(target) || monitors_.below_min(target) || monitors_.above_max(target)) {
+  if (!within_magnitude(target) || s_.monitors_.below_min(target) ||
+      s_.monitors_.above_max(target)) {
     return ErrorCode::kTargetPositionNotAllowed;
   }
-  if (job_.kind() != JobKind::kPosition) return ErrorCode::kFunctionNotAllowed;
-  if (stack_.compensation().running())
+  if (s_.job_.kind() != JobKind::kPosition) return ErrorCode::kFunctionNotAllowed;
+  if (s_.stack_.compensation().running()) {
     return ErrorCode::kCompensationActive;  // seed 000 §2.3, §2.4
-  if (!channel_.controller_enabled() || !channel_.feed_enabled(target - basic_state().p)) {
+  }
+  if (!s_.channel_.controller_enabled() || !s_.channel_.feed_enabled(target - s_.basic_state().p)) {
     return ErrorCode::kNoControllerOrFeedEnable;
   }
   return ErrorCode::kNone;
 }
 
-ErrorCode ServoAxis::new_position(const plc::Command& command) noexcept {
-  if (channel_.has_error()) return ErrorCode::kAxisInErrorState;
+ErrorCode OnlineChange::new_position(const plc::Command& command) noexcept {
+  if (s_.channel_.has_error()) return ErrorCode::kAxisInErrorState;
   if (stop_active()) return ErrorCode::kStopAlreadyActive;
   if (!std::isfinite(command.position)) return ErrorCode::kPositionNotFinite;
   if (const ErrorCode code = check_new_target(command.position); code != ErrorCode::kNone) {
     return code;
   }
-  if (!retarget(command.position, job_.user_velocity())) return ErrorCode::kPlannerNoSolution;
-  job_.activation() = Activation{};  // an instantaneous-only request deletes a pending one
-  channel_.answer(command.number, plc::CommandState::kDone);
+  if (!retarget(command.position, s_.job_.user_velocity())) return ErrorCode::kPlannerNoSolution;
+  s_.job_.activation() = Activation{};  // an instantaneous-only request deletes a pending one
+  s_.channel_.answer(command.number, plc::CommandState::kDone);
   return ErrorCode::kNone;
 }
 
-ErrorCode ServoAxis::new_position_and_velocity(const plc::Command& command) noexcept {
-  if (channel_.has_error()) return ErrorCode::kAxisInErrorState;
+ErrorCode OnlineChange::new_position_and_velocity(const plc::Command& command) noexcept {
+  if (s_.channel_.has_error()) return ErrorCode::kAxisInErrorState;
   if (stop_active()) return ErrorCode::kStopAlreadyActive;
   if (!std::isfinite(command.position)) return ErrorCode::kPositionNotFinite;
   if (!std::isfinite(command.velocity) || !std::isfinite(command.activation_position)) {
     return ErrorCode::kParameterNotFinite;
   }
   if (command.velocity <= 0.0) return ErrorCode::kVelocityNotPositive;
-  if (command.velocity > config_.max_velocity || command.velocity > config_.ref_velocity) {
+  if (command.velocity > s_.config_.max_velocity || command.velocity > s_.config_.ref_velocity) {
     return ErrorCode::kVelocityNotAllowed;
   }
   if (const ErrorCode code = check_new_target(command.position); code != ErrorCode::kNone) {
@@ -106,9 +92,9 @@ ErrorCode ServoAxis::new_position_and_velocity(const plc::Command& command) noex
   }
 
   // The six cases of seed 000 §2.4 in the logical direction d (positions multiplied by d).
-  const KinematicState now = basic_state();
+  const KinematicState now = s_.basic_state();
   double d = now.v > 0.0 ? 1.0 : (now.v < 0.0 ? -1.0 : 0.0);
-  if (d == 0.0) d = job_.target() >= job_.state().p ? 1.0 : -1.0;
+  if (d == 0.0) d = s_.job_.target() >= s_.job_.state().p ? 1.0 : -1.0;
   const double pos = d * now.p;
   const double apos = d * command.activation_position;
   const double epos = d * command.position;
@@ -128,53 +114,53 @@ ErrorCode ServoAxis::new_position_and_velocity(const plc::Command& command) noex
     next.direction = -d;
   }  // cases 3 and 6: back to EPos with VOld
 
-  if (!retarget(command.position, job_.user_velocity())) return ErrorCode::kPlannerNoSolution;
-  job_.activation() = next;  // replaces (or, when not armed, deletes) a pending activation
-  channel_.answer(command.number, plc::CommandState::kDone);
+  if (!retarget(command.position, s_.job_.user_velocity())) return ErrorCode::kPlannerNoSolution;
+  s_.job_.activation() = next;  // replaces (or, when not armed, deletes) a pending activation
+  s_.channel_.answer(command.number, plc::CommandState::kDone);
   return ErrorCode::kNone;
 }
 
-bool ServoAxis::retarget(double target, double velocity) noexcept {
-  const KinematicState from = basic_state();
-  Limits limits = job_.limits();
+bool OnlineChange::retarget(double target, double velocity) noexcept {
+  const KinematicState from = s_.basic_state();
+  Limits limits = s_.job_.limits();
   limits.velocity = velocity;
-  scratch_ = plan_position(from, target, limits);
-  if (!scratch_.ok()) return false;
-  const double reduced = reduced_level(scratch_, velocity);
+  s_.scratch_ = plan_position(from, target, limits);
+  if (!s_.scratch_.ok()) return false;
+  const double reduced = reduced_level(s_.scratch_, velocity);
   const double direction = target >= from.p ? 1.0 : -1.0;
-  const uint32_t override_value = job_.override_value();
+  const uint32_t override_value = s_.job_.override_value();
   const double level = override_level(velocity, reduced, override_value);
   bool final = true;
   if (override_value != plc::kOverrideFull && !plan_table(from, target, limits, level, final)) {
     return false;
   }
-  job_.set_levels(velocity, reduced, direction);
-  job_.set_handled_override(override_value);
+  s_.job_.set_levels(velocity, reduced, direction);
+  s_.job_.set_handled_override(override_value);
   install_table(target, final, level);
-  monitors_.reset_windows();
+  s_.monitors_.reset_windows();
   return true;
 }
 
-bool ServoAxis::activate_velocity(double velocity) noexcept {
-  const uint32_t override_value = job_.override_value();
+bool OnlineChange::activate_velocity(double velocity) noexcept {
+  const uint32_t override_value = s_.job_.override_value();
   const double f = override_factor(override_value);
   if (f == 0.0) {
     // At override 0 the job rests: VNew becomes its V and acts when the override rises.
-    job_.set_levels(velocity, velocity, job_.direction());
+    s_.job_.set_levels(velocity, velocity, s_.job_.direction());
     return false;
   }
-  const KinematicState from = basic_state();
-  const double target = job_.target() + (from.p - job_.state().p);
+  const KinematicState from = s_.basic_state();
+  const double target = s_.job_.target() + (from.p - s_.job_.state().p);
   const double direction = target >= from.p ? 1.0 : -1.0;
   const double speed = std::abs(from.v);
-  Limits limits = job_.limits();
+  Limits limits = s_.job_.limits();
   double level = velocity * f;
   for (int attempt = 0; attempt < kVelocityAttempts; ++attempt) {
     limits.velocity = level;
-    scratch_ = plan_position(from, target, limits);
-    if (scratch_.ok() && reaches_level(scratch_, level)) {
-      job_.set_levels(velocity, level / f, direction);
-      job_.set_handled_override(override_value);
+    s_.scratch_ = plan_position(from, target, limits);
+    if (s_.scratch_.ok() && reaches_level(s_.scratch_, level)) {
+      s_.job_.set_levels(velocity, level / f, direction);
+      s_.job_.set_handled_override(override_value);
       install_table(target, true, level);
       return true;
     }
@@ -183,15 +169,17 @@ bool ServoAxis::activate_velocity(double velocity) noexcept {
   return false;
 }
 
-void ServoAxis::install_table(double target, bool final, double level) noexcept {
-  job_.replan(scratch_, final);
-  stack_.rebase();  // planned from basic_state(): the held offset is in the table now
-  if (job_.kind() == JobKind::kPosition) {
-    job_.set_target(target);
-    target_ = target;
+void OnlineChange::install_table(double target, bool final, double level) noexcept {
+  s_.job_.replan(s_.scratch_, final);
+  s_.stack_.rebase();  // planned from s_.basic_state(): the held offset is in the table now
+  if (s_.job_.kind() == JobKind::kPosition) {
+    s_.job_.set_target(target);
+    s_.target_ = target;
   }
-  job_.set_target_velocity(final ? job_.direction() * level : 0.0);
-  if (final) plan_blend(level);  // a blending command waits: the new table passes its target
+  s_.job_.set_target_velocity(final ? s_.job_.direction() * level : 0.0);
+  if (final)
+    BufferedCommands(s_).plan_blend(
+        level);  // a blending command waits: the new table passes its target
 }
 
 }  // namespace nc::detail

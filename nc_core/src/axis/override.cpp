@@ -15,7 +15,8 @@
 // always taken (keeping the rest would leave the job waiting for ever).
 #include <cmath>
 
-#include "axis/servo_axis.hpp"
+#include "axis/buffered_commands.hpp"
+#include "axis/online_change.hpp"
 
 namespace nc::detail {
 
@@ -46,96 +47,89 @@ Limits with_running_jerk(const Limits& limits, const KinematicState& from, const
   return l;
 }
 
-void ServoAxis::read_override() noexcept {
-  const uint32_t value = channel_.ref().PlcToNc.Override;
-  if (value > plc::kOverrideFull) {
-    // Not a percentage: not taken. The last valid value stays in force, the warning says why.
-    channel_.warn(Warning::kOverrideNotAllowed);
-    return;
-  }
-  channel_.clear_warning(Warning::kOverrideNotAllowed);
-  job_.set_override(value);
-}
-
-double ServoAxis::override_level(double user_velocity, double reduced_velocity,
-                                 uint32_t override_value) const noexcept {
-  const double base = user_velocity_type(config_.override_type) ? user_velocity : reduced_velocity;
+double OnlineChange::override_level(double user_velocity, double reduced_velocity,
+                                    uint32_t override_value) const noexcept {
+  const double base =
+      user_velocity_type(s_.config_.override_type) ? user_velocity : reduced_velocity;
   return base * override_factor(override_value);
 }
 
-bool ServoAxis::plan_table(const KinematicState& from, double target, const Limits& limits,
-                           double level, bool& final) noexcept {
+bool OnlineChange::plan_table(const KinematicState& from, double target, const Limits& limits,
+                              double level, bool& final) noexcept {
   if (level > 0.0) {
     Limits at_level = limits;
     at_level.velocity = level;
-    scratch_ = plan_position(from, target, at_level);
+    s_.scratch_ = plan_position(from, target, at_level);
     final = true;
   } else {
-    scratch_ = plan_stop(from, limits.deceleration, limits.jerk);
+    s_.scratch_ = plan_stop(from, limits.deceleration, limits.jerk);
     final = false;
   }
-  return scratch_.ok();
+  return s_.scratch_.ok();
 }
 
-ErrorCode ServoAxis::start_positioning(uint16_t number, double target,
-                                       const Limits& limits) noexcept {
-  const Limits planned = with_running_jerk(limits, set_, running_motion(), config_.max_velocity);
+ErrorCode OnlineChange::start_positioning(uint16_t number, double target,
+                                          const Limits& limits) noexcept {
+  const Limits planned =
+      with_running_jerk(limits, s_.set_, s_.running_motion(), s_.config_.max_velocity);
   // Planned at 100 % first: its peak is the level reduced at the start (types 1 and 3).
-  scratch_ = plan_position(set_, target, planned);
-  if (!scratch_.ok()) return scratch_.error();
-  const double reduced = reduced_level(scratch_, planned.velocity);
-  const double direction = target >= set_.p ? 1.0 : -1.0;
-  const uint32_t override_value = job_.override_value();
+  s_.scratch_ = plan_position(s_.set_, target, planned);
+  if (!s_.scratch_.ok()) return s_.scratch_.error();
+  const double reduced = reduced_level(s_.scratch_, planned.velocity);
+  const double direction = target >= s_.set_.p ? 1.0 : -1.0;
+  const uint32_t override_value = s_.job_.override_value();
   const double level = override_level(planned.velocity, reduced, override_value);
   bool final = true;
-  if (override_value != plc::kOverrideFull && !plan_table(set_, target, planned, level, final)) {
-    return scratch_.error();
+  if (override_value != plc::kOverrideFull && !plan_table(s_.set_, target, planned, level, final)) {
+    return s_.scratch_.error();
   }
-  accept(JobKind::kPosition, number, scratch_, target, final ? direction * level : 0.0, planned);
-  job_.set_levels(planned.velocity, reduced, direction);
-  if (!final) job_.replan(scratch_, false);  // a start at override 0 waits at rest
+  s_.accept(JobKind::kPosition, number, s_.scratch_, target, final ? direction * level : 0.0,
+            planned);
+  s_.job_.set_levels(planned.velocity, reduced, direction);
+  if (!final) s_.job_.replan(s_.scratch_, false);  // a start at override 0 waits at rest
   return ErrorCode::kNone;
 }
 
-ErrorCode ServoAxis::start_continuous(uint16_t number, double velocity,
-                                      const Limits& limits) noexcept {
-  const Limits planned = with_running_jerk(limits, set_, running_motion(), config_.max_velocity);
+ErrorCode OnlineChange::start_continuous(uint16_t number, double velocity,
+                                         const Limits& limits) noexcept {
+  const Limits planned =
+      with_running_jerk(limits, s_.set_, s_.running_motion(), s_.config_.max_velocity);
   const double direction = velocity < 0.0 ? -1.0 : 1.0;
   const double speed = std::abs(velocity);
-  const double level = speed * override_factor(job_.override_value());
-  scratch_ = plan_velocity(set_, direction * level, planned);
-  if (!scratch_.ok()) return scratch_.error();
-  accept(JobKind::kVelocity, number, scratch_, target_, direction * level, planned);
-  job_.set_levels(speed, speed, direction);
+  const double level = speed * override_factor(s_.job_.override_value());
+  s_.scratch_ = plan_velocity(s_.set_, direction * level, planned);
+  if (!s_.scratch_.ok()) return s_.scratch_.error();
+  s_.accept(JobKind::kVelocity, number, s_.scratch_, s_.target_, direction * level, planned);
+  s_.job_.set_levels(speed, speed, direction);
   return ErrorCode::kNone;
 }
 
-void ServoAxis::apply_override() noexcept {
+void OnlineChange::apply_override() noexcept {
   // Answered once: a change that is refused (brake phase, types 1 and 2) is not retried
   // (seed 000 §2.1 "In case of failure, the function is not called again automatically").
-  job_.set_handled_override(job_.override_value());
-  const KinematicState from = basic_state();
+  s_.job_.set_handled_override(s_.job_.override_value());
+  const KinematicState from = s_.basic_state();
   const double level =
-      override_level(job_.user_velocity(), job_.reduced_velocity(), job_.override_value());
-  if (job_.kind() == JobKind::kVelocity) {
-    scratch_ = plan_velocity(from, job_.direction() * level, job_.limits());
-    if (scratch_.ok()) install_table(job_.target(), true, level);
+      override_level(s_.job_.user_velocity(), s_.job_.reduced_velocity(), s_.job_.override_value());
+  if (s_.job_.kind() == JobKind::kVelocity) {
+    s_.scratch_ = plan_velocity(from, s_.job_.direction() * level, s_.job_.limits());
+    if (s_.scratch_.ok()) install_table(s_.job_.target(), true, level);
     return;
   }
-  const bool resting = !job_.final_table();
-  if (!resting && job_.in_brake_phase(cycle_time_)) return;  // seed 000 §2.2
-  // The job's end, moved by what ended superpositions left (basic_state() includes it).
-  const double target = job_.target() + (from.p - job_.state().p);
+  const bool resting = !s_.job_.final_table();
+  if (!resting && s_.job_.in_brake_phase(s_.cycle_time_)) return;  // seed 000 §2.2
+  // The job's end, moved by what ended superpositions left (s_.basic_state() includes it).
+  const double target = s_.job_.target() + (from.p - s_.job_.state().p);
   bool final = true;
-  if (!plan_table(from, target, job_.limits(), level, final)) return;
+  if (!plan_table(from, target, s_.job_.limits(), level, final)) return;
   if (!final) {
     if (resting) return;
     // Override 0: rest on the path. A rest that would pass the target means the braking to the
     // target has in effect begun: the table goes on.
     const double toward = target - from.p;
-    if (from.v * toward > 0.0 && (scratch_.final_state().p - target) * toward > 0.0) return;
-  } else if (!resting && keeps_table_type(config_.override_type) &&
-             !reaches_level(scratch_, level)) {
+    if (from.v * toward > 0.0 && (s_.scratch_.final_state().p - target) * toward > 0.0) return;
+  } else if (!resting && keeps_table_type(s_.config_.override_type) &&
+             !reaches_level(s_.scratch_, level)) {
     return;  // types 1 and 2: the new level is not achievable, the old table is kept
   }
   install_table(target, final, level);

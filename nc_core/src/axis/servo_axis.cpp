@@ -1,9 +1,19 @@
-// The phases of the NC cycle for one axis (the kernel runs each over all axes): set values from
-// the master job, position control, drive and encoder, monitors, job completion and the axis error
-// (SPEC A3, A4, A6).
+// The phases of the NC cycle for one axis (the kernel runs each over all axes), and the two parts
+// they call in every cycle, kept in this file so that they inline into the phases: AxisMotion (set
+// values, position control, drive) and AxisMonitoring (enables, monitors, job completion) (SPEC
+// A3, A4, A6).
 #include "axis/servo_axis.hpp"
 
 #include <cmath>
+
+#include "axis/axis_commands.hpp"
+#include "axis/axis_monitoring.hpp"
+#include "axis/axis_motion.hpp"
+#include "axis/buffered_commands.hpp"
+#include "axis/group_errors.hpp"
+#include "axis/online_change.hpp"
+#include "axis/slave_coupling.hpp"
+#include "homing/axis_homing.hpp"
 
 namespace nc::detail {
 
@@ -11,7 +21,7 @@ using plc::CommandState;
 
 ServoAxis::ServoAxis(const AxisConfig& config, double cycle_time, std::size_t index,
                      Profile& scratch)
-    : cycle_time_(cycle_time), index_(index), scratch_(scratch), config_(config) {
+    : AxisCore(config, cycle_time, index, scratch) {
   encoder_ = config_.kind == AxisKind::kEncoder;
   modulo_factor_ = config_.modulo_factor;
   standstill_window_ = config_.standstill_window;
@@ -33,13 +43,15 @@ void ServoAxis::phase_commands(CouplingPort& port) noexcept {
   if (two_speed_) return two_speed_->phase_commands();
   error_event_ = false;
   drive_command_given_ = false;
-  read_override();
-  handle_commands(port);
-  check_enables();
+  OnlineChange(*this).read_override();
+  AxisCommands(*this).handle_commands(port);
+  AxisMonitoring(*this).check_enables();
   // command_buffer.cpp: a waiting command takes over; a pass left alone stops. Neither without
   // a waiting command or a pass.
-  if (buffer_.waiting || job_.passing()) run_buffer(port);
-  if (job_.is_motion()) run_online_functions();  // only a motion job has online functions
+  if (buffer_.waiting || job_.passing()) BufferedCommands(*this).run_buffer(port);
+  if (job_.is_motion()) {
+    OnlineChange(*this).run_online_functions();  // only a motion job has online functions
+  }
 }
 
 void ServoAxis::phase_set_values(AxisSnapshot& snapshot,
@@ -57,7 +69,7 @@ void ServoAxis::phase_set_values(AxisSnapshot& snapshot,
                             slave_link_.factor * master.target_velocity};
     target_ = slave_path_.target;
   }
-  generate_set_values(snapshots);
+  AxisMotion(*this).generate_set_values(snapshots);
   const BasicPath path = basic_path();
   snapshot.target_position = target_;
   snapshot.target_velocity = path.target_velocity;
@@ -71,7 +83,7 @@ void ServoAxis::phase_set_values(AxisSnapshot& snapshot,
   snapshot.set_jerk = set_jerk_;
   // C8: the filtered actual values instead (error_propagation.cpp); without slaves and a filter
   // running it has nothing to do.
-  if (slave_count_ != 0 || actual_filter_.active) publish_for_slaves(snapshot);
+  if (slave_count_ != 0 || actual_filter_.active) GroupErrors(*this).publish_for_slaves(snapshot);
 }
 
 void ServoAxis::phase_drive_command(const KinematicState& drive, ErrorCode stop,
@@ -86,7 +98,7 @@ void ServoAxis::phase_drive_command(const KinematicState& drive, ErrorCode stop,
 
 void ServoAxis::phase_drive(AxisSnapshot& snapshot) noexcept {
   if (two_speed_) return two_speed_->phase_drive(snapshot);
-  control_and_drive();
+  AxisMotion(*this).control_and_drive();
   previous_drive_position_ = drive_command().p;
   snapshot.set_position = set_.p;  // without the controller enable it follows the actual one
   snapshot.set_velocity = set_.v;
@@ -98,11 +110,11 @@ void ServoAxis::phase_drive(AxisSnapshot& snapshot) noexcept {
 
 void ServoAxis::phase_monitors(AxisSnapshot& snapshot) noexcept {
   if (two_speed_) return two_speed_->phase_monitors(snapshot);
-  run_monitors();
-  finish_job();
+  AxisMonitoring(*this).run_monitors();
+  AxisMonitoring(*this).finish_job();
   snapshot.error = channel_.error();
   snapshot.error_event = error_event_;
-  snapshot.group_reaction_due = propagation_.pending && group_reaction_due();
+  snapshot.group_reaction_due = propagation_.pending && GroupErrors(*this).group_reaction_due();
   const uint32_t control = channel_.ref().PlcToNc.ControlDWord;
   snapshot.controller_enabled = plc::test_bit(control, plc::kControlEnable);
   snapshot.feed_enabled_plus = plc::test_bit(control, plc::kControlFeedEnablePlus);
@@ -114,47 +126,120 @@ void ServoAxis::phase_monitors(AxisSnapshot& snapshot) noexcept {
   }
 }
 
-void ServoAxis::check_enables() noexcept {
-  const bool enabled = channel_.controller_enabled();
-  const bool lost = enable_seen_ && !enabled;
-  enable_seen_ = enabled;
-  if (slave_count_ == 0) {  // no group to follow this axis: never case 2 (follows_by_hand())
-    end_by_hand();
-  } else if (update_by_hand()) {
+// --- AxisMonitoring ---
+
+void AxisMonitoring::check_enables() noexcept {
+  AxisCore& a = s_;  // held in a register: no reload of s_ after each store
+  const bool enabled = a.channel_.controller_enabled();
+  const bool lost = a.enable_seen_ && !enabled;
+  a.enable_seen_ = enabled;
+  if (a.slave_count_ == 0) {  // no group to follow this axis: never case 2 (follows_by_hand())
+    GroupErrors(a).end_by_hand();
+  } else if (GroupErrors(a).update_by_hand()) {
     return;  // C8 case 2: the group follows this master pushed by hand
   }
   if (!enabled) {
     // Losing the controller enable while a command runs is an axis error (enable_loss.cpp);
     // there is no ramp to run (the drive is off), so the job ends here and the set values follow
     // the actual position.
-    if (enable_loss_is_error(lost)) raise_error(ErrorCode::kControllerEnableLost);
-    job_.clear();
+    if (GroupErrors(a).enable_loss_is_error(lost)) a.raise_error(ErrorCode::kControllerEnableLost);
+    a.job_.clear();
     return;
   }
   // Feed enable removed in the direction of travel: the axis stops on its error ramp (also when
   // external setpoints move it; a coupled slave's error stops its group, see Kernel).
-  if ((job_.is_motion() || homing_.active() || stack_.external().enabled() ||
-       slave_link_.coupled) &&
-      !channel_.has_error()) {
-    if (set_.v > 0.0 && !channel_.feed_enabled(1.0)) {
-      raise_error(ErrorCode::kFeedEnablePlusMissing);
-    } else if (set_.v < 0.0 && !channel_.feed_enabled(-1.0)) {
-      raise_error(ErrorCode::kFeedEnableMinusMissing);
+  if ((a.job_.is_motion() || a.homing_.active() || a.stack_.external().enabled() ||
+       a.slave_link_.coupled) &&
+      !a.channel_.has_error()) {
+    if (a.set_.v > 0.0 && !a.channel_.feed_enabled(1.0)) {
+      a.raise_error(ErrorCode::kFeedEnablePlusMissing);
+    } else if (a.set_.v < 0.0 && !a.channel_.feed_enabled(-1.0)) {
+      a.raise_error(ErrorCode::kFeedEnableMinusMissing);
     }
   }
 }
 
-void ServoAxis::generate_set_values(std::span<const AxisSnapshot> snapshots) noexcept {
-  previous_set_position_ = set_.p;
-  if (!channel_.controller_enabled()) {
-    set_jerk_ = 0.0;            // no generation: control_and_drive() makes the set position follow
-    end_external_generation();  // seed 000 §2.6: the controller enable's edge switches it off
+void AxisMonitoring::run_monitors() noexcept {
+  AxisCore& a = s_;  // held in a register: no reload of s_ after each store
+  const double actual = a.drive_.measured_position();
+  const bool armed = a.channel_.controller_enabled() && !a.channel_.has_error();
+  if (a.monitors_.following_error(a.drive_command().p - actual, armed)) {
+    a.raise_error(ErrorCode::kFollowingErrorPosition);
+  }
+  // Software limits during motion: the set position passes an enabled limit while it moves
+  // outward. Moving back in from outside (seed 000 §2.1 note 5) is not an error.
+  const bool moving_on_its_own = a.job_.active() && a.job_.kind() != JobKind::kEmergencyStop;
+  if (!a.channel_.has_error() && (moving_on_its_own || a.slave_link_.coupled)) {
+    if (a.set_.v > 0.0 && a.monitors_.above_max(a.set_.p)) {
+      a.raise_error(ErrorCode::kSoftLimitMaxDuringMotion);
+    } else if (a.set_.v < 0.0 && a.monitors_.below_min(a.set_.p)) {
+      a.raise_error(ErrorCode::kSoftLimitMinDuringMotion);
+    }
+  }
+  // The windows count only once set-value generation rests: the job has ended and the external
+  // generator (seed 000 §2.6) is not feeding a motion (direction ±1), so a fed motion passing
+  // through its target window is not "in target position".
+  const bool settled =
+      a.channel_.controller_enabled() && !a.stack_.external().moving() && !a.slave_link_.coupled &&
+      !a.homing_.active() &&
+      (!a.job_.active() || (a.job_.kind() != JobKind::kVelocity && a.job_.generation_ended()));
+  a.monitors_.windows(actual - a.drive_offset_, a.target_, settled);  // in program coordinates
+}
+
+void AxisMonitoring::finish_job() noexcept {
+  AxisCore& a = s_;  // held in a register: no reload of s_ after each store
+  // A job answers Done only while it is the command the axis executes and still runs: a job
+  // without a number of its own (a slave decoupled in motion goes on with its master's plan)
+  // must not answer CmdNo, which may be a command already answered (fuzz finding K12).
+  const bool own = a.channel_.runs(a.job_.number());
+  if (a.homing_.finished()) {
+    a.channel_.answer_current(CommandState::kDone);
+    a.homing_.clear();
+    a.target_ = a.set_.p;  // where the homing stopped: the windows watch it from now on
+  }
+  switch (a.job_.kind()) {
+    case JobKind::kNone:
+      break;
+    case JobKind::kPosition:
+      // Done = set-value generation ended and the target window reached (or switched off). A
+      // pass (blending) is done when the waiting command takes over (command_buffer.cpp).
+      if (a.job_.generation_ended() && !a.job_.passing() && a.monitors_.in_target_position()) {
+        if (own) a.channel_.answer_current(CommandState::kDone);
+        a.job_.clear();
+      }
+      break;
+    case JobKind::kVelocity:
+      if (a.job_.velocity_reached() && a.channel_.cmd_state() == CommandState::kActive) {
+        a.channel_.answer_current(CommandState::kReached);
+      }
+      break;
+    case JobKind::kHalt:
+    case JobKind::kStop:
+      if (a.job_.generation_ended()) {
+        if (own) a.channel_.answer_current(CommandState::kDone);
+        a.job_.clear();
+      }
+      break;
+    case JobKind::kEmergencyStop:
+      if (a.job_.generation_ended()) a.job_.clear();
+      break;
+  }
+}
+
+// --- AxisMotion ---
+
+void AxisMotion::generate_set_values(std::span<const AxisSnapshot> snapshots) noexcept {
+  AxisCore& a = s_;  // held in a register: no reload of s_ after each store
+  a.previous_set_position_ = a.set_.p;
+  if (!a.channel_.controller_enabled()) {
+    a.set_jerk_ = 0.0;  // no generation: control_and_drive() makes the set position follow
+    a.end_external_generation();  // seed 000 §2.6: the controller enable's edge switches it off
     // A coupled slave follows again from where it stands when the enable returns; its
     // compensation ends with the enable (the offset taken anew includes what it did).
-    if (slave_link_.coupled) {
-      slave_link_.retake_offset = true;
-      if (stack_.compensation().running() || stack_.held() != 0.0) {
-        fold_superpositions(CommandState::kAborted);
+    if (a.slave_link_.coupled) {
+      a.slave_link_.retake_offset = true;
+      if (a.stack_.compensation().running() || a.stack_.held() != 0.0) {
+        a.fold_superpositions(CommandState::kAborted);
       }
     }
     return;
@@ -162,244 +247,90 @@ void ServoAxis::generate_set_values(std::span<const AxisSnapshot> snapshots) noe
   bool not_finite = false;
   bool too_large = false;
   bool absolute_ended = false;
-  switch (source()) {
+  switch (a.source()) {
     case SetValueSource::kPtpJob:
-      base_ = job_.advance(cycle_time_);
-      set_jerk_ = job_.jerk();
+      a.base_ = a.job_.advance(a.cycle_time_);
+      a.set_jerk_ = a.job_.jerk();
       break;
     case SetValueSource::kExternalAbsolute: {
       const ExternalSetpoint::Step step =
-          stack_.external().take(channel_.ref().PlcToNc, cycle_time_);
-      base_ = step.state;
-      set_jerk_ = 0.0;
+          a.stack_.external().take(a.channel_.ref().PlcToNc, a.cycle_time_);
+      a.base_ = step.state;
+      a.set_jerk_ = 0.0;
       not_finite = step.not_finite;
       too_large = step.too_large;
       absolute_ended = step.finished;
       break;
     }
     case SetValueSource::kSlaveLink: {
-      const AxisSnapshot& master = snapshots[slave_link_.master];
-      if (slave_link_.cyclic) step_cyclic_factor(master);  // cyclic_slave.cpp
-      base_ = slave_link_.sample(master, set_.p);
-      set_jerk_ = slave_link_.factor * master.set_jerk;
+      const AxisSnapshot& master = snapshots[a.slave_link_.master];
+      if (a.slave_link_.cyclic) SlaveCoupling(a).step_cyclic_factor(master);
+      a.base_ = a.slave_link_.sample(master, a.set_.p);
+      a.set_jerk_ = a.slave_link_.factor * master.set_jerk;
       break;
     }
     case SetValueSource::kHomingJob:
-      run_homing();
+      AxisHoming(a).run_homing();
       break;
     case SetValueSource::kHold:
-      if (stack_.moves_alone()) {
-        base_.v = 0.0;  // the basic motion holds; a superposition may still move the axis
-        base_.a = 0.0;
+      if (a.stack_.moves_alone()) {
+        a.base_.v = 0.0;  // the basic motion holds; a superposition may still move the axis
+        a.base_.a = 0.0;
       } else {
-        base_ = KinematicState{set_.p, 0.0, 0.0};  // the axis holds where it is
-        stack_.drop_held();
+        a.base_ = KinematicState{a.set_.p, 0.0, 0.0};  // the axis holds where it is
+        a.stack_.drop_held();
       }
-      set_jerk_ = 0.0;
+      a.set_jerk_ = 0.0;
       break;
   }
-  if (stack_.empty()) {
+  if (a.stack_.empty()) {
     // The steady case: superimpose() would add the held ±0.0 and nothing else (the addition
     // kept for the sign of a zero). Without the stack there is no absolute packet either.
-    set_ = KinematicState{base_.p + stack_.held(), base_.v, base_.a};
+    a.set_ = KinematicState{a.base_.p + a.stack_.held(), a.base_.v, a.base_.a};
     return;
   }
-  const BasicPath path = basic_path();
+  const BasicPath path = a.basic_path();
   SuperpositionStack::Basic basic;
-  basic.state = base_;
+  basic.state = a.base_;
   basic.path_running = path.running;
   basic.has_target = path.has_target;
   basic.target = path.target;
   const SuperpositionStack::Result r =
-      stack_.superimpose(basic, channel_.ref().PlcToNc, channel_, cycle_time_);
-  set_ = r.set;
-  if (r.target_moved) target_ = r.target;
+      a.stack_.superimpose(basic, a.channel_.ref().PlcToNc, a.channel_, a.cycle_time_);
+  a.set_ = r.set;
+  if (r.target_moved) a.target_ = r.target;
   if (absolute_ended) {
-    base_ = KinematicState{set_.p, 0.0, 0.0};  // the last packet taken: the axis holds there
-    stack_.drop_held();
+    a.base_ = KinematicState{a.set_.p, 0.0, 0.0};  // the last packet taken: the axis holds there
+    a.stack_.drop_held();
   }
   // A packet with NaN or inf is not taken; the axis must not run on it (SPEC B8).
-  if (not_finite || r.not_finite) raise_error(ErrorCode::kParameterNotFinite);
+  if (not_finite || r.not_finite) a.raise_error(ErrorCode::kParameterNotFinite);
   // A finite packet out of range (external_setpoint.hpp) is not taken either: 0x4359.
-  if (too_large || r.too_large) raise_error(ErrorCode::kSetVelocityNotAllowed);
+  if (too_large || r.too_large) a.raise_error(ErrorCode::kSetVelocityNotAllowed);
 }
 
-BasicPath ServoAxis::basic_path() const noexcept {
-  if (slave_link_.coupled) return slave_path_;
-  const JobKind kind = job_.kind();
-  BasicPath path;
-  path.running = job_.active() && !job_.generation_ended();
-  path.stopping =
-      kind == JobKind::kHalt || kind == JobKind::kStop || kind == JobKind::kEmergencyStop;
-  path.positioning = kind == JobKind::kPosition;
-  path.has_target = job_.active() && kind != JobKind::kVelocity;
-  path.target = job_.target();
-  path.target_velocity = job_.active() ? job_.target_velocity() : 0.0;
-  return path;
-}
-
-SetValueSource ServoAxis::source() const noexcept {
-  if (slave_link_.coupled) return SetValueSource::kSlaveLink;  // a coupled slave has no job
-  if (homing_.active()) return SetValueSource::kHomingJob;
-  if (job_.active()) return SetValueSource::kPtpJob;
-  const ExternalSetpoint& external = stack_.external();
-  if (external.taking() && external.type() == ExternalSetpoint::Type::kAbsolute) {
-    return SetValueSource::kExternalAbsolute;
-  }
-  return SetValueSource::kHold;
-}
-
-void ServoAxis::control_and_drive() noexcept {
-  if (encoder_) {
+void AxisMotion::control_and_drive() noexcept {
+  AxisCore& a = s_;  // held in a register: no reload of s_ after each store
+  if (a.encoder_) {
     // Encoder / virtual axis: no controller, the actual values are the set values.
-    const KinematicState& command = drive_command();
-    drive_.follow(command.p, command.v, command.a);
+    const KinematicState& command = a.drive_command();
+    a.drive_.follow(command.p, command.v, command.a);
     return;
   }
-  if (!channel_.controller_enabled()) {
+  if (!a.channel_.controller_enabled()) {
     // TwinCAT: without controller enable the drive is off and the set position follows the
     // actual position, so there is no following error to jump at when the enable returns.
-    drive_.step(hand_velocity_, hand_velocity_ != 0.0);  // Kernel::push_by_hand, else off
-    drive_command_ = KinematicState{drive_.measured_position(), 0.0, 0.0};
-    set_ = KinematicState{drive_.measured_position() - drive_offset_, 0.0, 0.0};
-    target_ = set_.p;
+    a.drive_.step(a.hand_velocity_, a.hand_velocity_ != 0.0);  // Kernel::push_by_hand, else off
+    a.drive_command_ = KinematicState{a.drive_.measured_position(), 0.0, 0.0};
+    a.set_ = KinematicState{a.drive_.measured_position() - a.drive_offset_, 0.0, 0.0};
+    a.target_ = a.set_.p;
     return;
   }
-  const double previous = drive_command_given_ ? previous_drive_position_ : previous_set_position_;
-  const double command =
-      controller_.command(previous, drive_command().p, drive_.measured_position(), cycle_time_);
-  drive_.step(command, true);
-}
-
-void ServoAxis::run_monitors() noexcept {
-  const double actual = drive_.measured_position();
-  const bool armed = channel_.controller_enabled() && !channel_.has_error();
-  if (monitors_.following_error(drive_command().p - actual, armed)) {
-    raise_error(ErrorCode::kFollowingErrorPosition);
-  }
-  // Software limits during motion: the set position passes an enabled limit while it moves
-  // outward. Moving back in from outside (seed 000 §2.1 note 5) is not an error.
-  const bool moving_on_its_own = job_.active() && job_.kind() != JobKind::kEmergencyStop;
-  if (!channel_.has_error() && (moving_on_its_own || slave_link_.coupled)) {
-    if (set_.v > 0.0 && monitors_.above_max(set_.p)) {
-      raise_error(ErrorCode::kSoftLimitMaxDuringMotion);
-    } else if (set_.v < 0.0 && monitors_.below_min(set_.p)) {
-      raise_error(ErrorCode::kSoftLimitMinDuringMotion);
-    }
-  }
-  // The windows count only once set-value generation rests: the job has ended and the external
-  // generator (seed 000 §2.6) is not feeding a motion (direction ±1), so a fed motion passing
-  // through its target window is not "in target position".
-  const bool settled =
-      channel_.controller_enabled() && !stack_.external().moving() && !slave_link_.coupled &&
-      !homing_.active() &&
-      (!job_.active() || (job_.kind() != JobKind::kVelocity && job_.generation_ended()));
-  monitors_.windows(actual - drive_offset_, target_, settled);  // in program coordinates
-}
-
-void ServoAxis::finish_job() noexcept {
-  // A job answers Done only while it is the command the axis executes and still runs: a job
-  // without a number of its own (a slave decoupled in motion goes on with its master's plan)
-  // must not answer CmdNo, which may be a command already answered (fuzz finding K12).
-  const bool own = channel_.runs(job_.number());
-  if (homing_.finished()) {
-    channel_.answer_current(CommandState::kDone);
-    homing_.clear();
-    target_ = set_.p;  // where the homing stopped: the windows watch it from now on
-  }
-  switch (job_.kind()) {
-    case JobKind::kNone:
-      break;
-    case JobKind::kPosition:
-      // Done = set-value generation ended and the target window reached (or switched off). A
-      // pass (blending) is done when the waiting command takes over (command_buffer.cpp).
-      if (job_.generation_ended() && !job_.passing() && monitors_.in_target_position()) {
-        if (own) channel_.answer_current(CommandState::kDone);
-        job_.clear();
-      }
-      break;
-    case JobKind::kVelocity:
-      if (job_.velocity_reached() && channel_.cmd_state() == CommandState::kActive) {
-        channel_.answer_current(CommandState::kReached);
-      }
-      break;
-    case JobKind::kHalt:
-    case JobKind::kStop:
-      if (job_.generation_ended()) {
-        if (own) channel_.answer_current(CommandState::kDone);
-        job_.clear();
-      }
-      break;
-    case JobKind::kEmergencyStop:
-      if (job_.generation_ended()) job_.clear();
-      break;
-  }
-}
-
-void ServoAxis::raise_error(ErrorCode code, bool own) noexcept {
-  if (!channel_.raise(code)) return;  // the first error stays until reset
-  // The motion the error ramp takes over: a homing's stays readable after homing_.clear().
-  const MasterJob& running = running_motion();
-  error_event_ = true;
-  ++errors_raised_;
-  has_been_stopped_ = true;
-  if (job_.active() && channel_.runs(job_.number())) {
-    channel_.answer_current(CommandState::kError, plc::to_id(code));
-  }
-  if (homing_.active()) {
-    if (channel_.runs(homing_.number())) {
-      channel_.answer_current(CommandState::kError, plc::to_id(code));
-    }
-    homing_.clear();
-  }
-  // A slave's MC_GearIn / MC_GearInDyn fails with the axis (it is no longer InGear); the link
-  // itself stays until MC_GearOut (SPEC C7).
-  if (channel_.runs(slave_link_.command)) {
-    channel_.answer_current(CommandState::kError, plc::to_id(code));
-  }
-  drop_buffer(CommandState::kError, plc::to_id(code));  // a waiting command fails with the axis
-  // The compensation fails with the axis; external generation is switched off (seed 000 §2.6).
-  fold_superpositions(CommandState::kError, code);
-  if (own) begin_error_propagation();  // C7: DELAYED, a slave leaves its master here
-  // A coupled slave's motion is its master's: it goes on following (group reactions: SPEC C7).
-  if (slave_link_.coupled) return;
-  if (!channel_.controller_enabled()) {
-    job_.clear();
-    return;
-  }
-  // SPEC A6: the axis stops on its own emergency ramp, from the set state it has now; with the
-  // running job's larger jerk where the emergency jerk would pass the max velocity (K5).
-  const Limits limits = with_running_jerk({config_.max_velocity, config_.acceleration,
-                                           config_.emergency_deceleration, config_.emergency_jerk},
-                                          set_, running, config_.max_velocity);
-  scratch_ = plan_stop(set_, limits.deceleration, limits.jerk);
-  if (!scratch_.ok()) {
-    job_.clear();
-    return;
-  }
-  job_.start(JobKind::kEmergencyStop, 0, scratch_, scratch_.final_state().p, 0.0, limits);
-  target_ = scratch_.final_state().p;
-  monitors_.reset_windows();
-}
-
-void ServoAxis::group_error(ErrorCode code) noexcept {
-  raise_error(code, false);  // not this axis's own error: nothing propagates from it
-}
-
-void ServoAxis::reset_error() noexcept {
-  channel_.clear_warnings();
-  if (!channel_.has_error()) return;
-  channel_.clear_error();
-  propagation_.cancel();  // C7: a reset before the delay has run out: no group reaction
-  if (!job_.active() && !slave_link_.coupled) {
-    // The axis holds where it stands: no following error is carried over into the next start.
-    set_ = KinematicState{drive_.measured_position() - drive_offset_, 0.0, 0.0};
-    // The drive position d steps to the actual one too: no feed-forward kick from that step.
-    previous_drive_position_ = drive_.measured_position();
-    set_jerk_ = 0.0;
-    target_ = set_.p;
-    monitors_.reset_windows();
-  }
+  const double previous =
+      a.drive_command_given_ ? a.previous_drive_position_ : a.previous_set_position_;
+  const double command = a.controller_.command(previous, a.drive_command().p,
+                                               a.drive_.measured_position(), a.cycle_time_);
+  a.drive_.step(command, true);
 }
 
 }  // namespace nc::detail

@@ -1,5 +1,5 @@
 // Where the basic set value of an axis comes from: exactly one source at a time, a closed set.
-// The axis decides the source once per cycle (ServoAxis::source()) and switches over it without
+// The axis decides the source once per cycle (AxisCore::source()) and switches over it without
 // a default, so a new source (slave link, homing job, two-speed sequencer) is a compile error in
 // every place that must handle it. Superpositions come on top (superposition_stack.hpp).
 //

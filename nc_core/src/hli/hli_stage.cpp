@@ -1,7 +1,11 @@
-// The HLI coupling stage: list evaluation (D2, D4), the coupling matrix (D3), braking of stopped
-// targets, the 70195 software-limit check and the forward mapping (D5). Choices: docs/behaviour.md
-// "HLI axis coupling".
+// The HLI coupling stage: its set-up, the cycle (D3), the forward mapping (D5), and DriveBrakes
+// (braking of stopped targets, the 70195 software-limit check), kept here next to the cycle that
+// calls it. Lists are ListEvaluation's (list_evaluation.cpp), the matrix CouplingMatrix's.
+// Choices: docs/behaviour.md "HLI axis coupling".
 #include "hli/hli_stage.hpp"
+
+#include "hli/drive_brakes.hpp"
+#include "hli/list_evaluation.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -54,7 +58,7 @@ AxisSetup axis_setup(const AxisConfig& config) {
   return s;
 }
 
-HliStage::HliStage(double cycle_time) : cycle_time_(cycle_time) {
+HliStage::HliStage(double cycle_time) : HliState(cycle_time) {
   if (!(cycle_time > 0.0) || !std::isfinite(cycle_time)) {
     throw std::invalid_argument("HliStage: cycle time must be > 0");
   }
@@ -67,17 +71,7 @@ void HliStage::reserve(std::size_t axes) {
   source_uses_.reserve(axes);
   dfs_stack_.reserve((axes + 1) * kListSize);
   dfs_seen_.reserve(axes);
-  rows_.reserve(axes);
-  row_of_.reserve(axes);
-  grow_matrix(axes);
-}
-
-// The matrix is kept square at a capacity that grows by doubling (or to a reserve), so adding
-// axes one by one copies it O(log n) times; the part beyond the axes in use is zero.
-void HliStage::grow_matrix(std::size_t axes) {
-  if (axes <= static_cast<std::size_t>(k_.rows())) return;
-  const auto capacity = ix(std::max(axes, 2 * static_cast<std::size_t>(k_.rows())));
-  k_.conservativeResizeLike(Matrix::Zero(capacity, capacity));
+  matrix_.reserve(axes);
 }
 
 plc::hli::HLI_AX& HliStage::add_axis(const AxisSetup& setup) {
@@ -91,7 +85,6 @@ plc::hli::HLI_AX& HliStage::add_axis(const AxisSetup& setup) {
   }
   const std::size_t n = size() + 1;
   // What the cycle pushes into must hold n axes' worth without reallocating.
-  at_least(rows_, n);
   at_least(dfs_stack_, (n + 1) * kListSize);
   setups_.push_back(setup);
   units_.emplace_back();
@@ -101,16 +94,15 @@ plc::hli::HLI_AX& HliStage::add_axis(const AxisSetup& setup) {
   dfs_seen_.resize(n, 0);
 
   // The new axis is free (d = q), without a row; its column is zero in every stored row.
-  grow_matrix(n);
-  row_of_.push_back(kNoAxis);
-  for (Eigen::VectorXd* v : {&product_, &c_, &q_, &qv_, &qa_, &d_, &dv_, &da_}) {
+  matrix_.add_axis(n);
+  for (Eigen::VectorXd* v : {&c_, &q_, &qv_, &qa_, &d_, &dv_, &da_}) {
     v->conservativeResize(ix(n));
     (*v)(ix(n - 1)) = 0.0;
   }
   return units_.back();
 }
 
-std::size_t HliStage::index_of(int ax_nr) const noexcept {
+std::size_t HliState::index_of(int ax_nr) const noexcept {
   for (std::size_t i = 0; i < setups_.size(); ++i) {
     if (setups_[i].ax_nr == ax_nr) return i;
   }
@@ -134,24 +126,12 @@ bool HliStage::cycle(const Inputs& in, const Outputs& out) noexcept {
   // 1. Drive values with the lists in force: unit rows for free axes, the stored rows for the
   //    targets, the brake (kept in c) for braking axes.
   for (std::size_t i = 0; i < n; ++i) {
-    if (targets_[i].state == State::kBraking) advance_brake(i);
+    if (targets_[i].state == State::kBraking) DriveBrakes(*this).advance_brake(i);
   }
   d_ = q_ + c_;
   dv_ = qv_;
   da_ = qa_;
-  const Eigen::Index rows = ix(rows_.size());
-  if (rows > 0) {
-    const auto k = k_.topLeftCorner(rows, m);
-    product_.head(rows).noalias() = k * q_;
-    for (std::size_t j = 0; j < rows_.size(); ++j)
-      d_(ix(rows_[j])) = product_(ix(j)) + c_(ix(rows_[j]));
-    product_.head(rows).noalias() = k * qv_;
-    for (std::size_t j = 0; j < rows_.size(); ++j)
-      dv_(ix(rows_[j])) = product_(ix(j));
-    product_.head(rows).noalias() = k * qa_;
-    for (std::size_t j = 0; j < rows_.size(); ++j)
-      da_(ix(rows_[j])) = product_(ix(j));
-  }
+  matrix_.apply(m, q_, qv_, qa_, c_, d_, dv_, da_);
   for (std::size_t i = 0; i < n; ++i) {
     out.stop[i] = ErrorCode::kNone;
     const Target& t = targets_[i];
@@ -166,15 +146,16 @@ bool HliStage::cycle(const Inputs& in, const Outputs& out) noexcept {
   // 2. Lists whose semaphore is set, in axis order; each takes effect from this cycle's d on.
   for (std::size_t i = 0; i < n; ++i) {
     if (units_[i].lr_mc_control.axis_coupling.command_w.semaphor_rw) {
-      evaluate(i, in.refusal.empty() ? ErrorCode::kNone : in.refusal[i], out);
+      ListEvaluation(*this).evaluate(i, in.refusal.empty() ? ErrorCode::kNone : in.refusal[i], out);
     }
   }
 
   // 3. FRACT targets on a referenced axis: can the drive still stop before its limits?
   for (std::size_t i = 0; i < n; ++i) {
     const Target& t = targets_[i];
-    if (t.state == State::kCoupled && t.fract && in.referenced[i] && cannot_stop_before_limit(i)) {
-      halt(i, ErrorCode::kHliFractOnReferencedAxis, out);
+    if (t.state == State::kCoupled && t.fract && in.referenced[i] &&
+        DriveBrakes(*this).cannot_stop_before_limit(i)) {
+      DriveBrakes(*this).halt(i, ErrorCode::kHliFractOnReferencedAxis, out);
     }
   }
 
@@ -187,248 +168,19 @@ bool HliStage::cycle(const Inputs& in, const Outputs& out) noexcept {
   return true;
 }
 
-void HliStage::advance_brake(std::size_t axis) noexcept {
-  Target& t = targets_[axis];
-  const double a = setups_[axis].emergency_deceleration;
-  const double v = t.brake_velocity;
-  const double step = a * cycle_time_;
-  double moved = 0.0;
-  if (std::abs(v) > step) {
-    const double next = v - std::copysign(step, v);
-    moved = 0.5 * (v + next) * cycle_time_;
-    t.brake_velocity = next;
-  } else {
-    // Rest within this cycle: the rest of v²/(2a), so the whole stop is exactly v0²/(2a).
-    moved = v * std::abs(v) / (2.0 * a);
-    t.brake_velocity = 0.0;
-  }
-  c_(ix(axis)) += moved;
-  // At rest, and the axis's own program at rest too: it follows its program from here.
-  if (t.brake_velocity == 0.0 && qv_(ix(axis)) == 0.0) {
-    t.state = State::kFree;
-    c_(ix(axis)) -= q_(ix(axis));
-  }
+void HliStage::stop(std::size_t axis) noexcept {
+  if (axis < size()) DriveBrakes(*this).brake(axis);
 }
 
-plc::ErrorCode HliStage::parse(const h::HLI_AX_COUPLING_COMMAND& command,
-                               Candidate& list) const noexcept {
-  list.count = 0;
-  list.fract = false;
-  for (const h::HLI_AX_COUPLING_DESC& desc : command.desc) {
-    if (desc.mode == h::HLI_AXIS_COUPLING_INACTIVE) break;  // ends the list (seed's 4-row table)
-    if (desc.mode > h::HLI_AXIS_COUPLING_FRACT) return ErrorCode::kBlockInputOutOfRange;
-    const std::size_t source = index_of(desc.ax_nr);
-    if (source == kNoAxis) return ErrorCode::kInvalidAxisReference;
-    if (!setups_[source].couplable) return ErrorCode::kAxisKindNotAllowed;
-    Entry& e = list.entries[list.count++];
-    e.source = source;
-    e.shown = h::HLI_AX_COUPLING_STATE_DESC{desc.ax_nr, desc.mode};
-    switch (desc.mode) {
-      case h::HLI_AXIS_COUPLING_ZERO:
-        e.factor = 0.0;
-        break;
-      case h::HLI_AXIS_COUPLING_DIRECT:
-        e.factor = 1.0;
-        break;
-      case h::HLI_AXIS_COUPLING_MIRROR:
-        e.factor = -1.0;
-        break;
-      default: {  // FRACT
-        if (desc.fract_denom == 0) return ErrorCode::kHliDenominatorZero;
-        // |num / denom| > FACT_MAX, decided in integers so that exactly the maximum passes.
-        if (std::abs(int64_t{desc.fract_num}) >
-            int64_t{h::HLI_AXIS_COUPLING_FACT_MAX} * std::abs(int64_t{desc.fract_denom})) {
-          return ErrorCode::kHliFactorTooLarge;
-        }
-        e.factor = static_cast<double>(desc.fract_num) / static_cast<double>(desc.fract_denom);
-        list.fract = list.fract || desc.fract_num != 0;  // numerator 0 acts as ZERO
-        break;
-      }
-    }
-  }
-  return ErrorCode::kNone;
-}
-
-// With P-AXIS-00436 on an axis of the new list, the target may not reach itself through other
-// axes' lists in force (a loop among distinct axes); the direct self entry is allowed.
-bool HliStage::makes_loop(std::size_t target, const Candidate& list) noexcept {
-  bool mapped = setups_[target].forward_mapping;
-  for (std::size_t e = 0; e < list.count; ++e)
-    mapped = mapped || setups_[list.entries[e].source].forward_mapping;
-  if (!mapped) return false;
-
-  std::fill(dfs_seen_.begin(), dfs_seen_.end(), uint8_t{0});
-  dfs_stack_.clear();
-  for (std::size_t e = 0; e < list.count; ++e) {
-    if (list.entries[e].source != target) dfs_stack_.push_back(list.entries[e].source);
-  }
-  while (!dfs_stack_.empty()) {
-    const std::size_t axis = dfs_stack_.back();
-    dfs_stack_.pop_back();
-    if (axis == target) return true;
-    if (dfs_seen_[axis] != 0) continue;
-    dfs_seen_[axis] = 1;
-    const Target& t = targets_[axis];
-    if (t.state != State::kCoupled) continue;
-    for (std::size_t e = 0; e < t.count; ++e) {
-      // Each axis is expanded once, so at most n·kListSize pushes: within the reserve.
-      if (t.entries[e].source != axis) dfs_stack_.push_back(t.entries[e].source);
-    }
-  }
-  return false;
-}
-
-// 70200: the target's drive, or any old or new source's program, moves.
-bool HliStage::involved_axis_moves(std::size_t target, const Candidate& list) const noexcept {
-  if (dv_(ix(target)) != 0.0) return true;
-  const Target& t = targets_[target];
-  for (std::size_t e = 0; e < t.count; ++e) {
-    if (t.state == State::kCoupled && qv_(ix(t.entries[e].source)) != 0.0) return true;
-  }
-  for (std::size_t e = 0; e < list.count; ++e) {
-    if (qv_(ix(list.entries[e].source)) != 0.0) return true;
-  }
-  return false;
-}
-
-void HliStage::evaluate(std::size_t target, ErrorCode refusal, const Outputs& out) noexcept {
-  h::HLI_AX_COUPLING& unit = units_[target].lr_mc_control.axis_coupling;
-  unit.command_w.semaphor_rw = false;  // reset in the cycle it is evaluated
-  Candidate list;
-  ErrorCode code = !setups_[target].couplable    ? ErrorCode::kAxisKindNotAllowed
-                   : refusal != ErrorCode::kNone ? refusal
-                                                 : parse(unit.command_w, list);
-  if (code == ErrorCode::kNone && makes_loop(target, list)) code = ErrorCode::kHliCouplingLoop;
-  if (code != ErrorCode::kNone) {
-    unit.state_r.error_r = plc::to_id(code);  // refused: the list in force stays
-    return;
-  }
-  if (involved_axis_moves(target, list)) {
-    halt(target, ErrorCode::kHliChangeWhileMoving, out);
-    return;
-  }
-  unit.state_r.error_r = 0;
-  take(target, list);
-}
-
-void HliStage::take(std::size_t target, const Candidate& list) noexcept {
-  Target& t = targets_[target];
-  const Eigen::Index r = ix(target);
-  const double d_now = d_(r);
-  if (t.state == State::kCoupled) count_sources(target, t, false);
-  if (list.count == 0) {
-    // Switched off: the drive stays where it stands and follows the program from there.
-    t = Target{};
-    drop_row(target);
-    c_(r) = d_now - q_(r);
-    dv_(r) = qv_(r);
-    da_(r) = qa_(r);
-  } else {
-    t.state = State::kCoupled;
-    t.count = list.count;
-    t.fract = list.fract;
-    t.d_activation = d_now;
-    if (row_of_[target] == kNoAxis) {
-      row_of_[target] = rows_.size();
-      rows_.push_back(target);  // within the reserve: one row per axis at most
-    }
-    k_.row(ix(row_of_[target])).setZero();  // the whole capacity: unused columns stay zero
-    auto row = k_.row(ix(row_of_[target])).head(ix(size()));
-    for (std::size_t e = 0; e < list.count; ++e) {
-      t.entries[e] = list.entries[e];
-      t.entries[e].q_activation = q_(ix(list.entries[e].source));
-      row(ix(list.entries[e].source)) += list.entries[e].factor;
-    }
-    count_sources(target, t, true);
-    // d = d(activation) + Σ K·(q − q(activation)): c = d(activation) − Σ K·q(activation).
-    c_(r) = d_now - row.dot(q_);
-    dv_(r) = row.dot(qv_);
-    da_(r) = row.dot(qa_);
-  }
-  d_(r) = d_now;  // Δq = 0 at activation: the position does not jump
-  publish(target);
-}
-
-// Removes the axis's row; the last stored row takes its place.
-void HliStage::drop_row(std::size_t axis) noexcept {
-  const std::size_t j = row_of_[axis];
-  if (j == kNoAxis) return;
-  const std::size_t last = rows_.size() - 1;
-  if (j != last) {
-    k_.row(ix(j)) = k_.row(ix(last));
-    k_.row(ix(last)).setZero();
-    rows_[j] = rows_[last];
-    row_of_[rows_[j]] = j;
-  }
-  rows_.pop_back();
-  row_of_[axis] = kNoAxis;
+void HliStage::release(std::size_t axis) noexcept {
+  if (axis < size() && targets_[axis].state == State::kCoupled)
+    ListEvaluation(*this).take(axis, Candidate{});
 }
 
 double HliStage::factor(std::size_t target, std::size_t source) const noexcept {
   if (target >= size() || source >= size()) return 0.0;
-  if (row_of_[target] != kNoAxis) return k_(ix(row_of_[target]), ix(source));
+  if (matrix_.has_row(target)) return matrix_.at(target, source);
   return targets_[target].state == State::kFree && target == source ? 1.0 : 0.0;
-}
-
-void HliStage::halt(std::size_t axis, plc::ErrorCode code, const Outputs& out) noexcept {
-  stop(axis);
-  out.stop[axis] = code;
-  units_[axis].lr_mc_control.axis_coupling.state_r.error_r = plc::to_id(code);
-}
-
-void HliStage::stop(std::size_t axis) noexcept {
-  if (axis >= size()) return;
-  Target& t = targets_[axis];
-  const Eigen::Index r = ix(axis);
-  const double v = dv_(r);
-  if (t.state == State::kCoupled) count_sources(axis, t, false);
-  t = Target{};
-  t.state = State::kBraking;
-  t.brake_velocity = v;
-  drop_row(axis);
-  c_(r) = d_(r);
-  publish(axis);
-}
-
-void HliStage::release(std::size_t axis) noexcept {
-  if (axis < size() && targets_[axis].state == State::kCoupled) take(axis, Candidate{});
-}
-
-bool HliStage::cannot_stop_before_limit(std::size_t axis) const noexcept {
-  const AxisSetup& s = setups_[axis];
-  const Eigen::Index r = ix(axis);
-  // Where the drive will be next cycle with its present acceleration, and where it would come to
-  // rest from there (v²/2a, as the seed reckons): braking must start now if that is past a limit.
-  const double t = cycle_time_;
-  const double v_next = dv_(r) + da_(r) * t;
-  const double d_next = d_(r) + dv_(r) * t + 0.5 * da_(r) * t * t;
-  const double reach = v_next * std::abs(v_next) / (2.0 * s.emergency_deceleration);
-  if (s.sw_limit_max_enabled && dv_(r) > 0.0 && d_next + std::max(reach, 0.0) > s.sw_limit_max) {
-    return true;
-  }
-  return s.sw_limit_min_enabled && dv_(r) < 0.0 && d_next + std::min(reach, 0.0) < s.sw_limit_min;
-}
-
-void HliStage::count_sources(std::size_t target, const Target& t, bool add) noexcept {
-  for (std::size_t e = 0; e < t.count; ++e) {
-    const std::size_t source = t.entries[e].source;
-    if (source == target) continue;
-    if (add) {
-      ++source_uses_[source];
-    } else {
-      --source_uses_[source];
-    }
-  }
-}
-
-void HliStage::publish(std::size_t axis) noexcept {
-  h::HLI_AX_COUPLING_STATE& state = units_[axis].lr_mc_control.axis_coupling.state_r;
-  const Target& t = targets_[axis];
-  state.active_r = t.state == State::kCoupled;
-  for (std::size_t e = 0; e < kListSize; ++e) {
-    state.desc[e] =
-        state.active_r && e < t.count ? t.entries[e].shown : h::HLI_AX_COUPLING_STATE_DESC{};
-  }
 }
 
 double HliStage::command_position_request(std::size_t axis) const noexcept {
@@ -457,6 +209,66 @@ double HliStage::command_position_request(std::size_t axis) const noexcept {
     if (t.entries[e].source == axis) q0 = t.entries[e].q_activation;
   }
   return q0 + (d_(r) - t.d_activation - others) / self;
+}
+
+// --- DriveBrakes (drive_brakes.hpp) ---
+
+void DriveBrakes::brake(std::size_t axis) noexcept {
+  HliState::Target& t = s_.targets_[axis];
+  const Eigen::Index r = ix(axis);
+  const double v = s_.dv_(r);
+  if (t.state == HliState::State::kCoupled) ListEvaluation(s_).count_sources(axis, t, false);
+  t = HliState::Target{};
+  t.state = HliState::State::kBraking;
+  t.brake_velocity = v;
+  s_.matrix_.drop_row(axis);
+  s_.c_(r) = s_.d_(r);
+  ListEvaluation(s_).publish(axis);
+}
+
+void DriveBrakes::halt(std::size_t axis, plc::ErrorCode code, const Outputs& out) noexcept {
+  brake(axis);
+  out.stop[axis] = code;
+  s_.units_[axis].lr_mc_control.axis_coupling.state_r.error_r = plc::to_id(code);
+}
+
+void DriveBrakes::advance_brake(std::size_t axis) noexcept {
+  HliState::Target& t = s_.targets_[axis];
+  const double a = s_.setups_[axis].emergency_deceleration;
+  const double v = t.brake_velocity;
+  const double step = a * s_.cycle_time_;
+  double moved = 0.0;
+  if (std::abs(v) > step) {
+    const double next = v - std::copysign(step, v);
+    moved = 0.5 * (v + next) * s_.cycle_time_;
+    t.brake_velocity = next;
+  } else {
+    // Rest within this cycle: the rest of v²/(2a), so the whole stop is exactly v0²/(2a).
+    moved = v * std::abs(v) / (2.0 * a);
+    t.brake_velocity = 0.0;
+  }
+  s_.c_(ix(axis)) += moved;
+  // At rest, and the axis's own program at rest too: it follows its program from here.
+  if (t.brake_velocity == 0.0 && s_.qv_(ix(axis)) == 0.0) {
+    t.state = HliState::State::kFree;
+    s_.c_(ix(axis)) -= s_.q_(ix(axis));
+  }
+}
+
+bool DriveBrakes::cannot_stop_before_limit(std::size_t axis) const noexcept {
+  const AxisSetup& s = s_.setups_[axis];
+  const Eigen::Index r = ix(axis);
+  // Where the drive will be next cycle with its present acceleration, and where it would come to
+  // rest from there (v²/2a, as the seed reckons): braking must start now if that is past a limit.
+  const double t = s_.cycle_time_;
+  const double v_next = s_.dv_(r) + s_.da_(r) * t;
+  const double d_next = s_.d_(r) + s_.dv_(r) * t + 0.5 * s_.da_(r) * t * t;
+  const double reach = v_next * std::abs(v_next) / (2.0 * s.emergency_deceleration);
+  if (s.sw_limit_max_enabled && s_.dv_(r) > 0.0 && d_next + std::max(reach, 0.0) > s.sw_limit_max) {
+    return true;
+  }
+  return s.sw_limit_min_enabled && s_.dv_(r) < 0.0 &&
+         d_next + std::min(reach, 0.0) < s.sw_limit_min;
 }
 
 }  // namespace nc::hli

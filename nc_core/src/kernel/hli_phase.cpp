@@ -50,9 +50,9 @@ bool HliPhase::begin_cycle() noexcept {
 }
 
 plc::ErrorCode HliPhase::refusal(const ServoAxis& axis) noexcept {
-  if (axis.has_error()) return plc::ErrorCode::kAxisInErrorState;
-  if (!axis.controller_enabled()) return plc::ErrorCode::kNoControllerOrFeedEnable;
-  if (axis.external_enabled()) return plc::ErrorCode::kFunctionNotAllowed;
+  if (axis.core().channel_.has_error()) return plc::ErrorCode::kAxisInErrorState;
+  if (!axis.core().channel_.controller_enabled()) return plc::ErrorCode::kNoControllerOrFeedEnable;
+  if (axis.core().stack_.external().enabled()) return plc::ErrorCode::kFunctionNotAllowed;
   return plc::ErrorCode::kNone;
 }
 
@@ -67,7 +67,13 @@ void HliPhase::run(std::span<const std::unique_ptr<ServoAxis>> axes,
                    std::span<const AxisSnapshot> snapshots) noexcept {
   const std::size_t n = axes.size();
   for (std::size_t i = 0; i < n; ++i) {
-    const KinematicState q = axes[i]->program_state(snapshots[i]);
+    // The axis's own program set values (fuzz finding K14): its snapshot may carry the filtered
+    // actual values its slaves follow instead (C8); a two-speed axis's are its snapshot's.
+    const AxisCore& core = axes[i]->core();
+    const KinematicState q =
+        core.two_speed_ ? KinematicState{snapshots[i].set_position, snapshots[i].set_velocity,
+                                         snapshots[i].set_acceleration}
+                        : core.set_;
     q_[i] = q.p;
     qv_[i] = q.v;
     qa_[i] = q.a;
@@ -81,13 +87,13 @@ void HliPhase::run(std::span<const std::unique_ptr<ServoAxis>> axes,
     // off too, without a ramp to brake on; losing the enable while the drive moves is an axis
     // error, as during a job. (A target was coupled at the last phase (c): errors_seen_ is
     // that phase's count.)
-    const uint32_t raised = axes[i]->errors_raised();
+    const uint32_t raised = axes[i]->core().errors_raised_;
     const bool new_error = raised != errors_seen_[i];
     errors_seen_[i] = raised;
     if (!stage_.coupled(i)) continue;
-    if (axes[i]->has_error() || new_error) {
+    if (axes[i]->core().channel_.has_error() || new_error) {
       stage_.stop(i);
-    } else if (!axes[i]->controller_enabled()) {
+    } else if (!axes[i]->core().channel_.controller_enabled()) {
       if (dv_[i] != 0.0) pending_[i] = plc::ErrorCode::kControllerEnableMissing;
       stage_.release(i);
     }

@@ -65,7 +65,7 @@ class HliPhase {
   std::vector<plc::ErrorCode> stop_;
   std::vector<plc::ErrorCode> refusal_;
   std::vector<plc::ErrorCode> pending_;  // axis errors raised on the axis with this cycle's d
-  std::vector<uint32_t> errors_seen_;    // ServoAxis::errors_raised() at the last phase (c)
+  std::vector<uint32_t> errors_seen_;    // AxisCore::errors_raised_ at the last phase (c)
   bool engaged_ = false;
   // gpAx() was called: only then can a semaphore be set (nobody else reaches the units).
   mutable bool handed_out_ = false;
