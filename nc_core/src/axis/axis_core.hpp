@@ -3,8 +3,9 @@
 // raising the axis error, a new job taking over, folding the superpositions.
 //
 // ServoAxis (servo_axis.hpp) owns it and runs the phases; each feature is a class of its own that
-// takes the core by reference for one call (commands.hpp, online_change.hpp, buffered_commands.hpp,
-// slave_coupling.hpp, group_errors.hpp, superposition_commands.hpp, homing_start.hpp). The members
+// takes the core by reference for one call (axis_commands.hpp, online_change.hpp,
+// buffered_commands.hpp, slave_coupling.hpp, group_errors.hpp, superposition_commands.hpp,
+// axis_motion.hpp, axis_monitoring.hpp, homing/axis_homing.hpp). The members
 // keep their order: what a steady cycle touches first (docs/performance.md "Kernel cycle").
 // Contract: the constructor is set-up; every member function is a cycle function (noexcept, no
 // allocation, no lock).
