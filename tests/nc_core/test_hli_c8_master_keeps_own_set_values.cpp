@@ -1,7 +1,8 @@
 // A gear master that drives its slaves by its actual values (C8, DELAYED, case 1) keeps its own
 // set values while the HLI stage is engaged (fuzz finding K14, docs/reliability.md): the HLI
-// phase takes each axis's program set values q from the axis itself, not from the snapshot its
-// slaves read (the filtered actual values). Before the fix a slave's 70200 (an HLI list set on
+// phase takes each axis's program set values q from its snapshot's set values, which its slaves
+// no longer read while they follow the filtered actual values (AxisSnapshot::followed_*()).
+// Before the fix a slave's 70200 (an HLI list set on
 // it while it moves) reached the master by the group reaction, and the master's image showed the
 // slaves' filter (v 146 -> 0 -> 13.9 mm/s, a 13 890 mm/s²) instead of its emergency ramp.
 #include <catch2/catch.hpp>
@@ -51,7 +52,8 @@ TEST_CASE("A DELAYED actual-value master brakes on its own ramp after its slave'
     rig.cycles(1);
     ++cycles;
     const plc::NCTOPLC_AXIS_REF& n = rig.at(0).NcToPlc;
-    REQUIRE(n.SetVelo <= v);  // never faster again
+    REQUIRE(n.SetVelo <= v);    // never faster again
+    REQUIRE(n.SetVelo >= 0.0);  // nor backwards
     REQUIRE(n.SetVelo >= v - 0.001 * master.emergency_deceleration * 1.000001);  // 1 ms cycle
     REQUIRE(std::abs(n.SetAcc) <= master.emergency_deceleration * 1.000001);
     REQUIRE(n.SetPos >= p);  // no step back
