@@ -3,9 +3,9 @@
 #   1. a Release build with warnings as errors → ctest (every test, the install checks too);
 #   2. a build under AddressSanitizer + UndefinedBehaviorSanitizer → ctest again (tests that
 #      count allocations and the install checks are left out there);
-#   3. the fuzz targets (tests/fuzz, clang-14 + libFuzzer): those in NCSDK_FUZZ_TIMED
-#      (tests/fuzz/CMakeLists.txt) run NCSDK_FUZZ_SECONDS (60 s) each from their seed corpus, and
-#      every target replays its kept inputs, so that a regression shows.
+#   3. the fuzz targets (tests/fuzz, clang-14 + libFuzzer): those in the timed list
+#      (`ncsdk_fuzz_timed` in tests/fuzz/CMakeLists.txt) run NCSDK_FUZZ_SECONDS (60 s) each from
+#      their seed corpus, and every target replays its kept inputs, so that a regression shows.
 # Exits non-zero when a build or a test fails. The last line sums up the three runs as
 # "run_tests: N passed, M failed". No benchmarks.
 set -uo pipefail
