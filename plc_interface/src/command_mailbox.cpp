@@ -29,7 +29,12 @@ bool CommandMailbox::take(Command& out) noexcept {
 
 void CommandMailbox::set_answer(uint16_t number, CommandState state, uint32_t error_code) noexcept {
   if (number == 0) return;
-  answers_[number % kAnswerSlots] = CommandAnswer{number, state, error_code};
+  CommandAnswer& slot = answers_[number % kAnswerSlots];
+  // A slot belongs to the newest number that maps to it. Numbers wrap (65535 → 1), so "newer"
+  // is a distance below half the range; the skipped 0 shifts it by one only across the wrap.
+  const auto ahead = static_cast<uint16_t>(slot.number - number);
+  if (slot.number != 0 && ahead != 0 && ahead < 0x8000U) return;  // `number` is older: too late
+  slot = CommandAnswer{number, state, error_code};
 }
 
 }  // namespace plc

@@ -131,7 +131,9 @@ class CommandMailbox {
 
   // NC side. Takes the oldest posted command; false when the queue is empty.
   bool take(Command& out) noexcept;
-  // NC side. Records the state (and error code) of `number`.
+  // NC side. Records the state (and error code) of `number` — unless its slot already holds a
+  // newer number's answer: then `number` is so old that the PLC reads kFree for it anyway, and
+  // the newer answer stays (fuzz finding K21).
   void set_answer(uint16_t number, CommandState state, uint32_t error_code = 0) noexcept;
 
   std::size_t pending() const noexcept { return count_; }
