@@ -29,7 +29,7 @@ class OnlineChange : public AxisPart {
       return;
     }
     s_.channel_.clear_warning(Warning::kOverrideNotAllowed);
-    s_.job_.set_override(value);
+    s_.job_.online.set_override(value);
   }
   // Phase a, last: the override and a due new velocity act on the running job (inline: it runs
   // in every cycle of a motion job).
@@ -39,17 +39,18 @@ class OnlineChange : public AxisPart {
       return;
     }
     bool replanned = false;
-    Activation& activation = s_.job_.activation();
+    Activation& activation = s_.job_.online.activation();
     if (s_.job_.kind() == JobKind::kPosition && activation.armed) {
       const bool due = activation.immediate ||
                        (activation.direction * (s_.set_.p - activation.position) >= 0.0 &&
                         activation.direction * s_.set_.v > 0.0);
-      if (due && !s_.job_.in_brake_phase(s_.cycle_time_)) {
+      if (due && !s_.job_.table.in_brake_phase(s_.cycle_time_)) {
         activation.armed = false;
         replanned = activate_velocity(activation.velocity);
       }
     }
-    if (!replanned && s_.job_.override_value() != s_.job_.handled_override()) apply_override();
+    if (!replanned && s_.job_.online.override_value() != s_.job_.online.handled_override())
+      apply_override();
   }
   // A positioning / velocity job planned from set_ with the override in force, then accept().
   ErrorCode start_positioning(uint16_t number, double target, const Limits& limits) noexcept;

@@ -57,9 +57,9 @@ void ServoAxis::phase_publish(uint64_t cycle_counter) noexcept {
   out.CycleCounter = static_cast<uint32_t>(cycle_counter);
 
   // Constant velocity: a velocity job at its level, or the cruise phase of a positioning.
-  const double a_eps = 1e-9 * job_.limits().acceleration + 1e-12;
-  const bool constant_velocity = (kind == JobKind::kVelocity && job_.velocity_reached()) ||
-                                 (kind == JobKind::kPosition && !job_.generation_ended() &&
+  const double a_eps = 1e-9 * job_.goal.limits().acceleration + 1e-12;
+  const bool constant_velocity = (kind == JobKind::kVelocity && job_.table.velocity_reached()) ||
+                                 (kind == JobKind::kPosition && !job_.table.generation_ended() &&
                                   set_.v != 0.0 && std::abs(set_.a) <= a_eps && set_jerk_ == 0.0);
 
   // Bits or-ed in without branches (every bit starts at 0).

@@ -179,10 +179,10 @@ void AxisMonitoring::run_monitors() noexcept {
   // The windows count only once set-value generation rests: the job has ended and the external
   // generator (seed 000 §2.6) is not feeding a motion (direction ±1), so a fed motion passing
   // through its target window is not "in target position".
-  const bool settled =
-      a.channel_.controller_enabled() && !a.stack_.external().moving() && !a.slave_link_.coupled &&
-      !a.homing_.active() &&
-      (!a.job_.active() || (a.job_.kind() != JobKind::kVelocity && a.job_.generation_ended()));
+  const bool settled = a.channel_.controller_enabled() && !a.stack_.external().moving() &&
+                       !a.slave_link_.coupled && !a.homing_.active() &&
+                       (!a.job_.active() ||
+                        (a.job_.kind() != JobKind::kVelocity && a.job_.table.generation_ended()));
   a.monitors_.windows(actual - a.drive_offset_, a.target_, settled);  // in program coordinates
 }
 
@@ -203,25 +203,26 @@ void AxisMonitoring::finish_job() noexcept {
     case JobKind::kPosition:
       // Done = set-value generation ended and the target window reached (or switched off). A
       // pass (blending) is done when the waiting command takes over (command_buffer.cpp).
-      if (a.job_.generation_ended() && !a.job_.passing() && a.monitors_.in_target_position()) {
+      if (a.job_.table.generation_ended() && !a.job_.passing() &&
+          a.monitors_.in_target_position()) {
         if (own) a.channel_.answer_current(CommandState::kDone);
         a.job_.clear();
       }
       break;
     case JobKind::kVelocity:
-      if (a.job_.velocity_reached() && a.channel_.cmd_state() == CommandState::kActive) {
+      if (a.job_.table.velocity_reached() && a.channel_.cmd_state() == CommandState::kActive) {
         a.channel_.answer_current(CommandState::kReached);
       }
       break;
     case JobKind::kHalt:
     case JobKind::kStop:
-      if (a.job_.generation_ended()) {
+      if (a.job_.table.generation_ended()) {
         if (own) a.channel_.answer_current(CommandState::kDone);
         a.job_.clear();
       }
       break;
     case JobKind::kEmergencyStop:
-      if (a.job_.generation_ended()) a.job_.clear();
+      if (a.job_.table.generation_ended()) a.job_.clear();
       break;
   }
 }
@@ -249,8 +250,7 @@ void AxisMotion::generate_set_values(std::span<const AxisSnapshot> snapshots) no
   bool absolute_ended = false;
   switch (a.source()) {
     case SetValueSource::kPtpJob:
-      a.base_ = a.job_.advance(a.cycle_time_);
-      a.set_jerk_ = a.job_.jerk();
+      a.base_ = a.job_.advance(a.cycle_time_, a.set_jerk_);
       break;
     case SetValueSource::kExternalAbsolute: {
       const ExternalSetpoint::Step step =

@@ -107,7 +107,7 @@ ErrorCode SuperpositionCommands::enable_external(const plc::Command& command) no
   // Relative: the target refers to the internal generator's target (or position). The target
   // lies within the planner's range like a move's (fuzz: 3.6e307 overflowed a slave's TargetPos).
   const double reference = s_.job_.kind() == JobKind::kPosition
-                               ? s_.job_.target() + s_.stack_.held()
+                               ? s_.job_.goal.target() + s_.stack_.held()
                                : s_.basic_state().p;
   const double target = type == Type::kAbsolute ? command.position : command.position + reference;
   if (const ErrorCode code = check_target(target); code != ErrorCode::kNone) return code;
