@@ -193,7 +193,7 @@ ErrorCode AxisCommands::start_to_target(uint16_t number, double target,
   const bool at_rest = s_.set_.v == 0.0 && s_.set_.a == 0.0;
   if (at_rest && (distance == 0.0 || std::abs(distance) < s_.config_.encoder_increment)) {
     // Seed 000 §2.1: no start for a path shorter than one encoder increment — a warning.
-    s_.channel_.warn(Warning::kMovementSmallerThanIncrement);
+    s_.channel_.warnings.warn(Warning::kMovementSmallerThanIncrement);
     s_.channel_.answer(number, CommandState::kDone);
     return ErrorCode::kNone;
   }

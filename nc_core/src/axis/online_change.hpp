@@ -25,10 +25,10 @@ class OnlineChange : public AxisPart {
     const uint32_t value = s_.channel_.ref().PlcToNc.Override;
     if (value > plc::kOverrideFull) {
       // Not a percentage: not taken. The last valid value stays in force, the warning says why.
-      s_.channel_.warn(Warning::kOverrideNotAllowed);
+      s_.channel_.warnings.warn(Warning::kOverrideNotAllowed);
       return;
     }
-    s_.channel_.clear_warning(Warning::kOverrideNotAllowed);
+    s_.channel_.warnings.clear(Warning::kOverrideNotAllowed);
     s_.job_.online.set_override(value);
   }
   // Phase a, last: the override and a due new velocity act on the running job (inline: it runs

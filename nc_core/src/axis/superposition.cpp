@@ -66,9 +66,9 @@ ErrorCode SuperpositionCommands::start_compensation(const plc::Command& command)
   }
   s_.stack_.compensation() = planned_compensation;
   s_.channel_.answer(command.number, CommandState::kActive);
-  s_.channel_.clear_warning(Warning::kCompensationIncomplete);  // a former compensation's warning
+  s_.channel_.warnings.clear(Warning::kCompensationIncomplete);  // a former compensation's warning
   if (s_.stack_.compensation().planned_incomplete()) {
-    s_.channel_.warn(Warning::kCompensationIncomplete);
+    s_.channel_.warnings.warn(Warning::kCompensationIncomplete);
   }
   return ErrorCode::kNone;
 }

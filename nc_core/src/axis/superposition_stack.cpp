@@ -68,7 +68,7 @@ KinematicState SuperpositionStack::stop_start_state(const KinematicState& set) c
 void SuperpositionStack::end_compensation(AxisChannel& channel, CommandState state) noexcept {
   held_ += compensation_.finish();
   channel.answer(compensation_.number(), state);
-  if (compensation_.incomplete()) channel.warn(Warning::kCompensationIncomplete);
+  if (compensation_.incomplete()) channel.warnings.warn(Warning::kCompensationIncomplete);
 }
 
 void SuperpositionStack::fold(AxisChannel& channel, CommandState state, ErrorCode code) noexcept {
@@ -76,7 +76,7 @@ void SuperpositionStack::fold(AxisChannel& channel, CommandState state, ErrorCod
     // Its offset so far is in the set state, where the new job starts: nothing to hold.
     compensation_.finish();
     channel.answer(compensation_.number(), state, plc::to_id(code));
-    if (compensation_.incomplete()) channel.warn(Warning::kCompensationIncomplete);
+    if (compensation_.incomplete()) channel.warnings.warn(Warning::kCompensationIncomplete);
   }
   external_.abort();
   held_ = 0.0;

@@ -85,7 +85,7 @@ ErrorCode AxisHoming::start_home(const plc::Command& command) noexcept {
   s_.target_ = s_.set_.p;
   s_.monitors_.reset_windows();
   s_.has_been_stopped_ = false;
-  s_.channel_.clear_warnings_except(Warning::kOverrideNotAllowed);
+  s_.channel_.warnings.clear_except(Warning::kOverrideNotAllowed);
   return ErrorCode::kNone;
 }
 
