@@ -179,7 +179,7 @@ inline SetValueSource AxisCore::source() const noexcept {
   if (slave_link_.coupled) return SetValueSource::kSlaveLink;  // a coupled slave has no job
   if (homing_.active()) return SetValueSource::kHomingJob;
   if (job_.active()) return SetValueSource::kPtpJob;
-  const ExternalSetpoint& external = stack_.external();
+  const ExternalSetpoint& external = stack_.external;
   if (external.taking() && external.type() == ExternalSetpoint::Type::kAbsolute) {
     return SetValueSource::kExternalAbsolute;
   }

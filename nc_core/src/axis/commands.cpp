@@ -161,7 +161,7 @@ ErrorCode AxisCommands::check_start(const plc::Command& command, bool has_positi
   if (s_.locked_) return ErrorCode::kMotionCommandsLocked;
   // Seed 000 §2.6: external generation may join a running PTP motion (relative), "the opposite
   // case is not permitted".
-  if (s_.stack_.external().enabled()) return ErrorCode::kStartTypeNotAllowed;
+  if (s_.stack_.external.enabled()) return ErrorCode::kStartTypeNotAllowed;
   if (!known_buffer_mode(command.buffer_mode)) return ErrorCode::kBufferModeNotSupported;
   if (has_position && !std::isfinite(command.position)) return ErrorCode::kPositionNotFinite;
   return check_dynamics(command, limits);

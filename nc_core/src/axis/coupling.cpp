@@ -17,7 +17,7 @@ using plc::CommandType;
 
 bool SlaveCoupling::at_rest_for_coupling() const noexcept {
   return !s_.job_.active() && !s_.homing_.active() && s_.set_.v == 0.0 && s_.set_.a == 0.0 &&
-         !s_.stack_.compensation().running() && !s_.stack_.external().enabled();
+         !s_.stack_.compensation.running() && !s_.stack_.external.enabled();
 }
 
 bool SlaveCoupling::refused_while_coupled(CommandType type) noexcept {

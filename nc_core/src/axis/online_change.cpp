@@ -54,7 +54,7 @@ ErrorCode OnlineChange::check_new_target(double target) const noexcept {
     return ErrorCode::kTargetPositionNotAllowed;
   }
   if (s_.job_.kind() != JobKind::kPosition) return ErrorCode::kFunctionNotAllowed;
-  if (s_.stack_.compensation().running()) {
+  if (s_.stack_.compensation.running()) {
     return ErrorCode::kCompensationActive;  // seed 000 §2.3, §2.4
   }
   if (!s_.channel_.controller_enabled() || !s_.channel_.feed_enabled(target - s_.basic_state().p)) {
