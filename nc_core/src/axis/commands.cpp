@@ -265,7 +265,7 @@ ErrorCode AxisCommands::start_halt_or_stop(const plc::Command& command) noexcept
   // Seed 000 §2.2 "Emergency stop": the command's deceleration and jerk replace the running
   // motion's only when both are larger, and never in the brake phase (the braking that runs goes
   // on: a stop with the running motion's values continues it).
-  const bool braking = running.table.in_brake_phase(s_.cycle_time_);
+  const bool braking = running.in_brake_phase(s_.cycle_time_);
   if (!braking && command.deceleration > limits.deceleration && command.jerk > limits.jerk) {
     limits.deceleration = command.deceleration;
     limits.jerk = command.jerk;
@@ -275,7 +275,7 @@ ErrorCode AxisCommands::start_halt_or_stop(const plc::Command& command) noexcept
   if (!s_.scratch_.ok()) return s_.scratch_.error();
   s_.accept(stop ? JobKind::kStop : JobKind::kHalt, command.number, s_.scratch_,
             s_.scratch_.final_state().p, 0.0, limits);
-  if (braking) s_.job_.table.mark_brake_phase();
+  if (braking) s_.job_.mark_brake_phase();
   if (stop) s_.locked_ = true;
   s_.has_been_stopped_ = true;
   return ErrorCode::kNone;

@@ -8,10 +8,6 @@
 // generation has ended. A velocity table never ends: past its end the profile extrapolates the
 // hold. A passing table (BufferMode blending) goes on at its end velocity the same way.
 //
-// Brake phase (seed 000 §2.2, §2.4): the trailing part of a positioning table in which |v| only
-// falls, found once per table (brake_start()). A Halt or Stop planned in the brake phase counts
-// as braking as a whole (mark_brake_phase()), so that no later stop sharpens it.
-//
 // Online decoupling (SPEC C4, seed 000 §3.2.3): a former slave's copy of its head's table runs
 // through a chain of affine levels (p = f·p + o, v = f·v, a = f·a), the arithmetic its slave
 // links did, so it goes on bit for bit; the next install drops the chain.
@@ -94,19 +90,13 @@ struct DecouplingChain {
 
 class JobTable {
  public:
-  // Takes over a planned profile, sampled from k = 0 at its start state; `brake_phase`: it has a
-  // final deceleration to look for (a final positioning table).
-  void install(const Profile& profile, bool brake_phase) noexcept;
-  // No table: nothing ended, reached or braking.
+  // Takes over a planned profile, sampled from k = 0 at its start state.
+  void install(const Profile& profile) noexcept;
+  // No table: nothing ended or reached.
   void clear() noexcept;
   // Online decoupling: the output so far and all later samples go through `chain` (after the
   // table's own chain).
   void follow(const DecouplingChain& chain) noexcept;
-  // The whole table counts as brake phase (a Halt / Stop planned in one).
-  void mark_brake_phase() noexcept {
-    has_brake_phase_ = true;
-    brake_start_ = 0.0;
-  }
   // Right after install(): the table's t = 0 lies `offset` s after the last sample (offset <= 0:
   // the table began between two cycles), so sample k is taken at k·T + offset.
   void set_time_offset(double offset) noexcept { offset_ = offset; }
@@ -120,17 +110,16 @@ class JobTable {
   double duration() const noexcept { return profile_.duration(); }
   bool holds_velocity() const noexcept { return profile_.holds_velocity(); }
 
-  // The next cycle's set values of a job of `kind` (`final`: this table ends the job), their
-  // jerk in `jerk`. Call once per cycle.
-  KinematicState advance(JobKind kind, bool final, double cycle_time, double& jerk) noexcept;
+  // The next cycle's set values of a job of `kind` (`final`: this table ends the job). Call once
+  // per cycle.
+  KinematicState advance(JobKind kind, bool final, double cycle_time) noexcept;
+  double jerk() const noexcept { return jerk_; }
   // The set state output last (the table's start state right after install()).
   KinematicState state() const noexcept { return state_; }
   // The final table has reached its end: its final state is output.
   bool generation_ended() const noexcept { return ended_; }
   // A velocity table holds its (non-zero) constant velocity.
   bool velocity_reached() const noexcept { return reached_; }
-  // The final deceleration to the target has begun, judged at the state output last.
-  bool in_brake_phase(double cycle_time) const noexcept;
   // Levels of the online-decoupling chain in force (0: the table is the axis's own).
   std::size_t chain_depth() const noexcept { return chain_.count; }
 
@@ -139,8 +128,7 @@ class JobTable {
   double offset_ = 0.0;  // s; see set_time_offset()
   bool ended_ = false;
   bool reached_ = false;
-  bool has_brake_phase_ = false;
-  double brake_start_ = 0.0;
+  double jerk_ = 0.0;
   KinematicState state_{};
   DecouplingChain chain_{};  // empty except after an online decoupling, until the next install
   Profile profile_{};        // last: a cycle reads its header and one segment, not all of it

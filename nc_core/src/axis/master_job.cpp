@@ -109,18 +109,23 @@ void MasterJob::start(JobKind kind, uint16_t number, const Profile& profile, dou
   goal.start(target, target_velocity, limits);
   online.start();
   final_ = true;
-  table.install(profile, kind == JobKind::kPosition);
+  table.install(profile);
+  has_brake_phase_ = kind == JobKind::kPosition;
+  brake_start_ = has_brake_phase_ ? brake_start(profile) : 0.0;
 }
 
 void MasterJob::replan(const Profile& profile, bool final) noexcept {
   final_ = final;
-  table.install(profile, final && kind_ == JobKind::kPosition);
+  table.install(profile);
+  has_brake_phase_ = final && kind_ == JobKind::kPosition;
+  brake_start_ = has_brake_phase_ ? brake_start(profile) : 0.0;
 }
 
 void MasterJob::clear() noexcept {
   kind_ = JobKind::kNone;
   number_ = 0;
   final_ = true;
+  has_brake_phase_ = false;
   table.clear();
   online.activation() = Activation{};
 }
@@ -159,27 +164,27 @@ void JobOnline::follow(const DecouplingChain& chain, uint32_t override_value) no
   handled_override_ = override_value;
 }
 
-void JobTable::install(const Profile& profile, bool brake_phase) noexcept {
+void JobTable::install(const Profile& profile) noexcept {
   profile_ = profile;
   chain_.count = 0;
   k_ = 0;
   offset_ = 0.0;
   ended_ = false;
   reached_ = false;
+  jerk_ = 0.0;
   state_ = profile.start_state();
-  has_brake_phase_ = brake_phase;
-  brake_start_ = brake_phase ? brake_start(profile) : 0.0;
 }
 
 void JobTable::clear() noexcept {
   k_ = 0;
   ended_ = false;
   reached_ = false;
-  has_brake_phase_ = false;
+  jerk_ = 0.0;
 }
 
 void JobTable::follow(const DecouplingChain& chain) noexcept {
   state_ = chain.state(state_);
+  jerk_ *= chain.total_factor();
   // The chain of this table comes first (a former master that was itself decoupled online).
   DecouplingChain joined = chain_;
   for (std::size_t i = 0; i < chain.count; ++i)
@@ -187,24 +192,21 @@ void JobTable::follow(const DecouplingChain& chain) noexcept {
   chain_ = joined;
 }
 
-bool JobTable::in_brake_phase(double cycle_time) const noexcept {
+bool MasterJob::in_brake_phase(double cycle_time) const noexcept {
   if (!has_brake_phase_) return false;
-  if (ended_) return true;
-  const double t = sample_time(cycle_time);
+  if (table.generation_ended()) return true;
+  const double t = table.sample_time(cycle_time);
   return t >= brake_start_ - kEndTolerance * std::max(1.0, brake_start_);
 }
 
-KinematicState JobTable::advance(JobKind kind, bool final, double cycle_time,
-                                 double& jerk) noexcept {
-  // `jerk` is written last in each branch: it may alias anything, so nothing is read after it.
+KinematicState JobTable::advance(JobKind kind, bool final, double cycle_time) noexcept {
   const auto passing = [&]() noexcept {
     return kind == JobKind::kPosition && profile_.holds_velocity();
   };
   if (ended_ && !passing()) {
-    const KinematicState out = chain_.state(profile_.final_state());
-    state_ = out;
-    jerk = 0.0;
-    return out;
+    jerk_ = 0.0;
+    state_ = chain_.state(profile_.final_state());
+    return state_;
   }
   ++k_;
   const double t = sample_time(cycle_time);
@@ -214,30 +216,25 @@ KinematicState JobTable::advance(JobKind kind, bool final, double cycle_time,
     // The hold goes on past the end of the profile: at() extrapolates it. A hold at 0 (override
     // 0) is not "reached": InVelocity means moving at the commanded level.
     if (at_end) reached_ = profile_.final_state().v != 0.0;
-    double sample_jerk = 0.0;
-    const KinematicState sample = profile_.at(t, sample_jerk);
-    const double out_jerk = at_end ? 0.0 : chain_.velocity(sample_jerk);
-    const KinematicState out = chain_.state(sample);
-    state_ = out;
-    jerk = out_jerk;
-    return out;
+    double jerk = 0.0;
+    const KinematicState sample = profile_.at(t, jerk);
+    jerk_ = at_end ? 0.0 : chain_.velocity(jerk);
+    state_ = chain_.state(sample);
+    return state_;
   }
   if (at_end) {
     // A rest for override 0 holds its end but does not end the job.
     ended_ = final;
+    jerk_ = 0.0;
     // A pass goes on at its velocity.
-    const KinematicState out = chain_.state(passing() ? profile_.at(t) : profile_.final_state());
-    state_ = out;
-    jerk = 0.0;
-    return out;
+    state_ = chain_.state(passing() ? profile_.at(t) : profile_.final_state());
+    return state_;
   }
-  double sample_jerk = 0.0;
-  const KinematicState sample = profile_.at(t, sample_jerk);  // one search for p, v, a and j
-  const double out_jerk = chain_.velocity(sample_jerk);
-  const KinematicState out = chain_.state(sample);
-  state_ = out;
-  jerk = out_jerk;
-  return out;
+  double jerk = 0.0;
+  const KinematicState sample = profile_.at(t, jerk);  // one search for p, v, a and j
+  jerk_ = chain_.velocity(jerk);
+  state_ = chain_.state(sample);
+  return state_;
 }
 
 }  // namespace nc::detail

@@ -8,6 +8,11 @@
 // table that is not "final" is a rest for override 0: it brings the axis to rest on its path and
 // then holds; the job does not end there but waits for the override to rise.
 //
+// Brake phase (seed 000 §2.2, §2.4): the final deceleration of a positioning table to its target,
+// i.e. the trailing part of the table in which |v| only falls, found once per table
+// (brake_start()). A Halt or Stop planned in the brake phase counts as braking as a whole
+// (mark_brake_phase()), so that no later stop sharpens it.
+//
 // A passing table (BufferMode blending, docs/behaviour.md "BufferMode") ends at its target with a
 // velocity. The buffered command takes over in the cycle whose sample passes that end: it is
 // planned from the table's end state and sampled from the time since that end (a time offset),
@@ -42,10 +47,10 @@ class MasterJob {
   void follow(const DecouplingChain& chain, uint16_t number, const Limits& limits,
               uint32_t override_value) noexcept;
 
-  // The set values of the next cycle, their jerk in `jerk`. Call once per cycle while
+  // The set values of the next cycle (their jerk: table.jerk()). Call once per cycle while
   // kind() != kNone.
-  KinematicState advance(double cycle_time, double& jerk) noexcept {
-    return table.advance(kind_, final_, cycle_time, jerk);
+  KinematicState advance(double cycle_time) noexcept {
+    return table.advance(kind_, final_, cycle_time);
   }
   // A passing table whose end falls within the next cycle.
   bool passes_in_next_cycle(double cycle_time) const noexcept;
@@ -61,11 +66,21 @@ class MasterJob {
   bool passing() const noexcept { return kind_ == JobKind::kPosition && table.holds_velocity(); }
   // The running table ends at the job's goal (false: a rest for override 0).
   bool final_table() const noexcept { return final_; }
+  // The final deceleration to the target has begun (positioning tables, and a Halt / Stop
+  // planned in one). Judged at the state output last.
+  bool in_brake_phase(double cycle_time) const noexcept;
+  // The whole running table counts as brake phase (a Halt / Stop planned in one).
+  void mark_brake_phase() noexcept {
+    has_brake_phase_ = true;
+    brake_start_ = 0.0;
+  }
 
  private:
   JobKind kind_ = JobKind::kNone;
   uint16_t number_ = 0;
   bool final_ = true;
+  bool has_brake_phase_ = false;
+  double brake_start_ = 0.0;
 
  public:
   JobGoal goal{};

@@ -44,7 +44,7 @@ class OnlineChange : public AxisPart {
       const bool due = activation.immediate ||
                        (activation.direction * (s_.set_.p - activation.position) >= 0.0 &&
                         activation.direction * s_.set_.v > 0.0);
-      if (due && !s_.job_.table.in_brake_phase(s_.cycle_time_)) {
+      if (due && !s_.job_.in_brake_phase(s_.cycle_time_)) {
         activation.armed = false;
         replanned = activate_velocity(activation.velocity);
       }

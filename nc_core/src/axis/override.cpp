@@ -117,7 +117,7 @@ void OnlineChange::apply_override() noexcept {
     return;
   }
   const bool resting = !s_.job_.final_table();
-  if (!resting && s_.job_.table.in_brake_phase(s_.cycle_time_)) return;  // seed 000 §2.2
+  if (!resting && s_.job_.in_brake_phase(s_.cycle_time_)) return;  // seed 000 §2.2
   // The job's end, moved by what ended superpositions left (s_.basic_state() includes it).
   const double target = s_.job_.goal.target() + (from.p - s_.job_.table.state().p);
   bool final = true;

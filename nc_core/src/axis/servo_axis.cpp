@@ -250,7 +250,8 @@ void AxisMotion::generate_set_values(std::span<const AxisSnapshot> snapshots) no
   bool absolute_ended = false;
   switch (a.source()) {
     case SetValueSource::kPtpJob:
-      a.base_ = a.job_.advance(a.cycle_time_, a.set_jerk_);
+      a.base_ = a.job_.advance(a.cycle_time_);
+      a.set_jerk_ = a.job_.table.jerk();
       break;
     case SetValueSource::kExternalAbsolute: {
       const ExternalSetpoint::Step step =
