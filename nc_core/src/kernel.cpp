@@ -16,7 +16,7 @@
 
 namespace nc {
 
-Kernel::Kernel(KernelConfig config) : config_(config), scratch_(std::make_unique<Profile>()) {
+Kernel::Kernel(KernelConfig config) : config_(config) {
   validate(config_);
   hli_ = std::make_unique<detail::HliPhase>(config_.cycle_time);
 }
@@ -60,45 +60,6 @@ plc::AXIS_REF& Kernel::add_axis(const AxisConfig& config) {
   group_ready_.push_back(0);
   axes_.push_back(std::move(axis));
   return axes_.back()->ref();
-}
-
-bool Kernel::reference_cam(std::string_view name) const {
-  return detail::AxisHoming(find(name).core()).reference_cam();
-}
-
-detail::ServoAxis& Kernel::find(std::string_view name) const {
-  for (const auto& a : axes_) {
-    if (a->config().name == name) return *a;
-  }
-  throw ConfigError("/axes", "has no axis with this name", std::string(name));
-}
-
-plc::AXIS_REF& Kernel::axis(std::string_view name) {
-  return find(name).ref();
-}
-const plc::AXIS_REF& Kernel::axis(std::string_view name) const {
-  return find(name).ref();
-}
-plc::AXIS_REF& Kernel::axis(std::size_t index) noexcept {
-  return axes_[index]->ref();
-}
-const AxisConfig& Kernel::config(std::string_view name) const {
-  return find(name).config();
-}
-const plc::NCTOIO_DRIVE_TWO_SPEED& Kernel::two_speed_output(std::string_view name) const {
-  const detail::AxisCore& axis = find(name).core();
-  const plc::NCTOIO_DRIVE_TWO_SPEED* image = axis.two_speed_ ? &axis.two_speed_->output() : nullptr;
-  if (image == nullptr) {
-    throw ConfigError("/axes", "has this axis, but not of kind two_speed", std::string(name));
-  }
-  return *image;
-}
-
-std::span<plc::hli::HLI_AX* const> Kernel::gpAx() const noexcept {
-  return hli_->gpAx();
-}
-double Kernel::command_position_request(int ax_nr) const noexcept {
-  return hli_->command_position_request(ax_nr, axes_);
 }
 
 void Kernel::cycle() noexcept {

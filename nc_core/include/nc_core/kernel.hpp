@@ -13,30 +13,18 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <memory>
-#include <span>
-#include <string_view>
-#include <vector>
 
 #include <nlohmann/json_fwd.hpp>
 
 #include "nc_core/axis_config.hpp"
-#include "nc_core/axis_snapshot.hpp"
-#include "nc_core/coupling_graph.hpp"
-#include "plc_interface/axis_ref.hpp"
-#include "plc_interface/hli.hpp"
-#include "plc_interface/two_speed.hpp"
+#include "nc_core/detail/kernel_axes.hpp"
+#include "plc_interface/error_code.hpp"
 
 namespace nc {
 
-class Profile;
-
-namespace detail {
-class ServoAxis;
-class HliPhase;
-}  // namespace detail
-
-class Kernel {
+// The axis lookups (axis, axis_count, config, reference_cam, two_speed_output, snapshot,
+// couplings, gpAx, command_position_request) come from detail::KernelAxes.
+class Kernel : public detail::KernelAxes {
  public:
   // Set-up: validates `config` (throws ConfigError).
   explicit Kernel(KernelConfig config = {});
@@ -55,40 +43,12 @@ class Kernel {
   // of the Kernel object). An id of 0 is replaced by index + 1.
   plc::AXIS_REF& add_axis(const AxisConfig& config);
 
-  // Set-up: the axis with this name; ConfigError when there is none.
-  plc::AXIS_REF& axis(std::string_view name);
-  const plc::AXIS_REF& axis(std::string_view name) const;
-  // By index (0 … axis_count()-1, the order of add_axis; NcToPlc.AxisIndex). Unchecked.
-  plc::AXIS_REF& axis(std::size_t index) noexcept;
-  std::size_t axis_count() const noexcept { return axes_.size(); }
-  // The configuration as the axis uses it (id filled in).
-  const AxisConfig& config(std::string_view name) const;
   const KernelConfig& kernel_config() const noexcept { return config_; }
-  // The simulated reference cam of an axis (AxisConfig::homing_cam_position / _width), a digital
-  // input for the PLC to pass to MC_Home.bCalibrationCam. Set-up lookup by name (ConfigError).
-  bool reference_cam(std::string_view name) const;
-  // Set-up lookup, read in the cycle: the 12-byte NC→I/O image of the two-speed axis `name`
-  // (SPEC E4), as written by the last cycle; the reference stays valid for the kernel's life.
-  // ConfigError when there is no such axis or it is not of kind kTwoSpeed.
-  const plc::NCTOIO_DRIVE_TWO_SPEED& two_speed_output(std::string_view name) const;
 
   // Cycle function: one NC cycle, phase by phase over all axes (docs/architecture.md "One
   // tick"): commands, set values (masters before slaves), couplings on drive positions, position
   // control + drive + encoder, monitors and errors then group reactions, publish.
   void cycle() noexcept;
-
-  // What axis `index` published to the other axes in the last cycle. Unchecked index.
-  const AxisSnapshot& snapshot(std::size_t index) const noexcept { return snapshots_[index]; }
-  // Who follows whom (the MC_GearIn / MC_GearInDyn couplings in force).
-  const CouplingGraph& couplings() const noexcept { return couplings_; }
-
-  // HLI axis coupling (SPEC D1, seed 002): gpAx[axis_idx], the CNC control unit of each axis,
-  // indexed by axis index (the order of add_axis); the pointers stay valid for the kernel's life.
-  std::span<plc::hli::HLI_AX* const> gpAx() const noexcept;
-  // D5: the program coordinate #CHANNEL INIT [CMDPOS] would give logical axis `ax_nr`
-  // (AxisConfig::id) now: the drive position by default, solved through its list with
-  // P-AXIS-00436 / 00460. NaN for an unknown axis number.
-  double command_position_request(int ax_nr) const noexcept;
 
   // The simulated drive of a continuous axis whose controller enable is off is moved by hand
   // at `velocity` (mm/s, signed) from the next cycle on, until another velocity is given or the
@@ -107,7 +67,6 @@ class Kernel {
   double time() const noexcept { return static_cast<double>(cycles_) * config_.cycle_time; }
 
  private:
-  detail::ServoAxis& find(std::string_view name) const;
   // Phases (a) … (f) over axes [first, last) of the set-value order.
   void run_phases(std::size_t first, std::size_t last, uint64_t counter) noexcept;
   // Phase (e), with couplings: an axis's new error reaches its whole group (SPEC C7).
@@ -118,15 +77,6 @@ class Kernel {
   void mark_ready_groups() noexcept;
 
   KernelConfig config_;
-  std::vector<std::unique_ptr<detail::ServoAxis>> axes_;
-  std::vector<AxisSnapshot> snapshots_;
-  CouplingGraph couplings_;
-  std::vector<uint8_t> group_ready_;  // scratch of mark_ready_groups(), one per axis
-  // Phase (c): the HLI coupling stage (on the heap: its control units keep their addresses).
-  std::unique_ptr<detail::HliPhase> hli_;
-  // One planning scratch profile for all axes (a start plans here first, so a refusal changes
-  // nothing); on the heap so that its address survives a move of the Kernel.
-  std::unique_ptr<Profile> scratch_;
   uint64_t cycles_ = 0;
 };
 

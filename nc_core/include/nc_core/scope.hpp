@@ -66,30 +66,12 @@ struct ScopeChannelInfo {
   Signal signal = Signal::kSetPos;  // valid when is_axis_signal
 };
 
-class Scope {
+namespace detail {
+
+// A scope's recording: its channels and samples, and the after-run functions that read and write
+// them. Scope (below) fills it; users call these members through Scope.
+class ScopeRecording {
  public:
-  // Set-up: reserves room for `capacity` samples (≥ 1) of the time column. Throws
-  // std::invalid_argument for capacity 0.
-  explicit Scope(std::size_t capacity);
-
-  // Set-up: adds a channel sampling `signal` of `axis`, named "<axis_name>.<signal name>". The
-  // axis must outlive the scope (Kernel::add_axis references stay valid for the kernel's life).
-  // Throws std::invalid_argument for an empty or duplicate name or one containing a comma, quote
-  // or line break (it must stay one CSV cell), std::logic_error once samples were recorded.
-  // Returns the channel's index.
-  std::size_t add_signal(const plc::AXIS_REF& axis, std::string_view axis_name, Signal signal);
-  // Set-up: adds the seven kMotionSignals of one axis.
-  void add_motion_signals(const plc::AXIS_REF& axis, std::string_view axis_name);
-  // Set-up: adds a channel over any double the application owns (a PLC variable, a plant value).
-  std::size_t add_variable(const double* source, std::string_view name, std::string_view unit);
-
-  // Cycle: samples every channel at time `time` (s). Returns false, and counts the sample as
-  // dropped, when the storage is full.
-  bool record(double time) noexcept;
-
-  // Cycle: forgets the samples (keeps channels and storage).
-  void clear() noexcept;
-
   std::size_t capacity() const noexcept { return capacity_; }
   std::size_t size() const noexcept { return size_; }
   std::size_t dropped() const noexcept { return dropped_; }
@@ -117,7 +99,7 @@ class Scope {
   void write_csv(const std::filesystem::path& path) const;
   void write_json(const std::filesystem::path& path) const;
 
- private:
+ protected:
   struct Channel {
     ScopeChannelInfo info;
     const plc::AXIS_REF* axis = nullptr;
@@ -125,14 +107,46 @@ class Scope {
     std::vector<double> values;
   };
 
-  std::size_t add_channel(Channel channel);
-  static double sample(const Channel& channel) noexcept;
+  explicit ScopeRecording(std::size_t capacity) noexcept : capacity_(capacity) {}
 
   std::size_t capacity_;
   std::size_t size_ = 0;
   std::size_t dropped_ = 0;
   std::vector<double> times_;
   std::vector<Channel> channels_;
+};
+
+}  // namespace detail
+
+// The recorder: set-up and the cycle; the recording's readers and writers come from
+// detail::ScopeRecording.
+class Scope : public detail::ScopeRecording {
+ public:
+  // Set-up: reserves room for `capacity` samples (≥ 1) of the time column. Throws
+  // std::invalid_argument for capacity 0.
+  explicit Scope(std::size_t capacity);
+
+  // Set-up: adds a channel sampling `signal` of `axis`, named "<axis_name>.<signal name>". The
+  // axis must outlive the scope (Kernel::add_axis references stay valid for the kernel's life).
+  // Throws std::invalid_argument for an empty or duplicate name or one containing a comma, quote
+  // or line break (it must stay one CSV cell), std::logic_error once samples were recorded.
+  // Returns the channel's index.
+  std::size_t add_signal(const plc::AXIS_REF& axis, std::string_view axis_name, Signal signal);
+  // Set-up: adds the seven kMotionSignals of one axis.
+  void add_motion_signals(const plc::AXIS_REF& axis, std::string_view axis_name);
+  // Set-up: adds a channel over any double the application owns (a PLC variable, a plant value).
+  std::size_t add_variable(const double* source, std::string_view name, std::string_view unit);
+
+  // Cycle: samples every channel at time `time` (s). Returns false, and counts the sample as
+  // dropped, when the storage is full.
+  bool record(double time) noexcept;
+
+  // Cycle: forgets the samples (keeps channels and storage).
+  void clear() noexcept;
+
+ private:
+  std::size_t add_channel(Channel channel);
+  static double sample(const Channel& channel) noexcept;
 };
 
 }  // namespace nc

@@ -35,17 +35,12 @@ bool AxisChannel::raise(plc::ErrorCode code) noexcept {
   return true;
 }
 
-void AxisChannel::clear_warnings_except(Warning keep) noexcept {
-  warnings_ = static_cast<uint8_t>(warnings_ & warning_bit(keep));
-}
-
-uint32_t AxisChannel::warning_code() const noexcept {
-  if (warnings_ == 0) return 0;
-  if ((warnings_ & warning_bit(last_warning_)) != 0)
-    return plc::to_id(kWarningCodes[static_cast<int>(last_warning_)]);
+uint32_t AxisWarnings::code() const noexcept {
+  if (bits_ == 0) return 0;
+  if ((bits_ & warning_bit(last_)) != 0) return plc::to_id(kWarningCodes[static_cast<int>(last_)]);
   // The last one was cleared: the first of those still latched.
   for (unsigned i = 0; i < 3; ++i) {
-    if ((warnings_ & (1U << i)) != 0) return plc::to_id(kWarningCodes[i]);
+    if ((bits_ & (1U << i)) != 0) return plc::to_id(kWarningCodes[i]);
   }
   return 0;
 }

@@ -26,6 +26,29 @@ inline uint8_t warning_bit(Warning w) noexcept {
   return static_cast<uint8_t>(1U << static_cast<unsigned>(w));
 }
 
+// The warnings an axis latches: a bit each; NcToPlc.Warning shows the last one set while it still
+// holds, otherwise the first still latched.
+class AxisWarnings {
+ public:
+  void warn(Warning w) noexcept {
+    bits_ = static_cast<uint8_t>(bits_ | warning_bit(w));
+    last_ = w;
+  }
+  void clear(Warning w) noexcept { bits_ = static_cast<uint8_t>(bits_ & ~warning_bit(w)); }
+  // All warnings but `keep` (kept when latched).
+  void clear_except(Warning keep) noexcept {
+    bits_ = static_cast<uint8_t>(bits_ & warning_bit(keep));
+  }
+  void clear_all() noexcept { bits_ = 0; }
+  bool any() const noexcept { return bits_ != 0; }
+  // NcToPlc.Warning (0: none).
+  uint32_t code() const noexcept;
+
+ private:
+  uint8_t bits_ = 0;  // bit per Warning
+  Warning last_ = Warning::kMovementSmallerThanIncrement;
+};
+
 class AxisChannel {
  public:
   plc::AXIS_REF& ref() noexcept { return ref_; }
@@ -63,23 +86,11 @@ class AxisChannel {
   bool raise(plc::ErrorCode code) noexcept;
   void clear_error() noexcept { error_ = plc::ErrorCode::kNone; }
 
-  void warn(Warning w) noexcept {
-    warnings_ = static_cast<uint8_t>(warnings_ | warning_bit(w));
-    last_warning_ = w;
-  }
-  void clear_warning(Warning w) noexcept {
-    warnings_ = static_cast<uint8_t>(warnings_ & ~warning_bit(w));
-  }
-  // All warnings but `keep` (kept when latched).
-  void clear_warnings_except(Warning keep) noexcept;
-  void clear_warnings() noexcept { warnings_ = 0; }
-  uint32_t warning_code() const noexcept;
-
   // CmdNo, CmdState, ErrorCode, Warning and AxisIndex of NcToPlc.
   void publish(int32_t index) noexcept {
     plc::NCTOPLC_AXIS_REF& out = ref_.NcToPlc;
     out.ErrorCode = plc::to_id(error_);
-    out.Warning = warnings_ == 0 ? 0 : warning_code();
+    out.Warning = warnings.any() ? warnings.code() : 0;
     out.CmdNo = cmd_no_;
     out.CmdState = static_cast<uint16_t>(cmd_state_);
     out.AxisIndex = index;
@@ -89,8 +100,11 @@ class AxisChannel {
   uint16_t cmd_no_ = 0;  // the command the axis executes (or executed last)
   plc::CommandState cmd_state_ = plc::CommandState::kFree;
   plc::ErrorCode error_ = plc::ErrorCode::kNone;
-  uint8_t warnings_ = 0;  // bit per Warning
-  Warning last_warning_ = Warning::kMovementSmallerThanIncrement;
+
+ public:
+  AxisWarnings warnings{};  // a part of its own: every axis part sets and clears them
+
+ private:
   plc::AXIS_REF ref_{};  // last: its mailbox is large and cold in a steady cycle
 };
 

@@ -29,7 +29,7 @@ void AxisCore::accept(JobKind kind, uint16_t number, const Profile& profile, dou
   if (kind == JobKind::kPosition || kind == JobKind::kVelocity) {
     has_been_stopped_ = false;
     // The override's warning stays while PlcToNc.Override is not taken (read_override()).
-    channel_.clear_warnings_except(Warning::kOverrideNotAllowed);
+    channel_.warnings.clear_except(Warning::kOverrideNotAllowed);
   }
 }
 

@@ -124,7 +124,7 @@ struct AxisCore {
   BasicPath basic_path() const noexcept;
   double target_velocity() const noexcept {  // basic_path().target_velocity, without the rest
     if (slave_link_.coupled) return slave_path_.target_velocity;
-    return job_.active() ? job_.target_velocity() : 0.0;
+    return job_.active() ? job_.goal.target_velocity() : 0.0;
   }
   double set_jerk_ = 0.0;
   double previous_set_position_ = 0.0;
@@ -165,13 +165,13 @@ inline BasicPath AxisCore::basic_path() const noexcept {
   if (slave_link_.coupled) return slave_path_;
   const JobKind kind = job_.kind();
   BasicPath path;
-  path.running = job_.active() && !job_.generation_ended();
+  path.running = job_.active() && !job_.table.generation_ended();
   path.stopping =
       kind == JobKind::kHalt || kind == JobKind::kStop || kind == JobKind::kEmergencyStop;
   path.positioning = kind == JobKind::kPosition;
   path.has_target = job_.active() && kind != JobKind::kVelocity;
-  path.target = job_.target();
-  path.target_velocity = job_.active() ? job_.target_velocity() : 0.0;
+  path.target = job_.goal.target();
+  path.target_velocity = job_.active() ? job_.goal.target_velocity() : 0.0;
   return path;
 }
 
@@ -179,7 +179,7 @@ inline SetValueSource AxisCore::source() const noexcept {
   if (slave_link_.coupled) return SetValueSource::kSlaveLink;  // a coupled slave has no job
   if (homing_.active()) return SetValueSource::kHomingJob;
   if (job_.active()) return SetValueSource::kPtpJob;
-  const ExternalSetpoint& external = stack_.external();
+  const ExternalSetpoint& external = stack_.external;
   if (external.taking() && external.type() == ExternalSetpoint::Type::kAbsolute) {
     return SetValueSource::kExternalAbsolute;
   }

@@ -90,7 +90,7 @@ ErrorCode BufferedCommands::buffer_command(const plc::Command& command,
   if (ready_for_next()) {
     take_next(port);
   } else if (blending_mode(command.buffer_mode)) {
-    plan_blend(std::abs(s_.job_.target_velocity()));
+    plan_blend(std::abs(s_.job_.goal.target_velocity()));
   }
   return ErrorCode::kNone;
 }
@@ -103,11 +103,11 @@ bool BufferedCommands::ready_for_next() const noexcept {
       return true;
     case JobKind::kPosition:
       return s_.job_.final_table() &&
-             (s_.job_.generation_ended() || s_.job_.passes_in_next_cycle(s_.cycle_time_));
+             (s_.job_.table.generation_ended() || s_.job_.passes_in_next_cycle(s_.cycle_time_));
     case JobKind::kHalt:
-      return s_.job_.generation_ended();
+      return s_.job_.table.generation_ended();
     case JobKind::kVelocity:
-      return s_.job_.velocity_reached();
+      return s_.job_.table.velocity_reached();
     case JobKind::kStop:
     case JobKind::kEmergencyStop:
       return false;  // a stop locks, an error ramp drops the buffer: never reached
@@ -118,7 +118,7 @@ bool BufferedCommands::ready_for_next() const noexcept {
 void BufferedCommands::run_buffer(CouplingPort& port) noexcept {
   if (s_.buffer_.waiting && ready_for_next()) take_next(port);
   // A pass whose next command was refused when taking over (or dropped) must not run away.
-  if (!s_.buffer_.waiting && s_.job_.passing() && s_.job_.generation_ended()) stop_pass();
+  if (!s_.buffer_.waiting && s_.job_.passing() && s_.job_.table.generation_ended()) stop_pass();
 }
 
 void BufferedCommands::take_next(CouplingPort& port) noexcept {
@@ -128,7 +128,7 @@ void BufferedCommands::take_next(CouplingPort& port) noexcept {
   // Relative and modulo targets count from the running positioning's target (where a buffered
   // command starts), not from where the set values are when it takes over.
   const bool after_positioning = s_.job_.kind() == JobKind::kPosition;
-  const double base = after_positioning ? s_.job_.target() : s_.set_.p;
+  const double base = after_positioning ? s_.job_.goal.target() : s_.set_.p;
   ErrorCode code = ErrorCode::kNone;
   if (next.type == CommandType::kMoveRelative) {
     next.type = CommandType::kMoveAbsolute;
@@ -136,7 +136,7 @@ void BufferedCommands::take_next(CouplingPort& port) noexcept {
   } else if (next.type == CommandType::kMoveModulo) {
     double end = 0.0;
     code = AxisCommands(s_).modulo_end(
-        next, base, after_positioning ? s_.job_.direction() : s_.current_direction(), end);
+        next, base, after_positioning ? s_.job_.goal.direction() : s_.current_direction(), end);
     next.type = CommandType::kMoveAbsolute;
     next.position = end;
   }
@@ -152,12 +152,12 @@ void BufferedCommands::take_next(CouplingPort& port) noexcept {
       // The pass ends within this cycle: the next command starts from the pass's end state at
       // its end time, so its first sample lies between 0 and T after the target.
       const KinematicState now = s_.set_;
-      const double offset = s_.job_.sample_time(s_.cycle_time_) - s_.job_.table_duration();
-      s_.set_ = s_.job_.table_end();
+      const double offset = s_.job_.table.sample_time(s_.cycle_time_) - s_.job_.table.duration();
+      s_.set_ = s_.job_.table.end_state();
       code = AxisCommands(s_).handle_now(next, port);
       s_.set_ = now;
       if (code == ErrorCode::kNone && s_.job_.number() == next.number) {
-        s_.job_.set_time_offset(offset);
+        s_.job_.table.set_time_offset(offset);
       }
     } else {
       code = AxisCommands(s_).handle_now(next, port);
@@ -170,11 +170,11 @@ void BufferedCommands::take_next(CouplingPort& port) noexcept {
 }
 
 void BufferedCommands::stop_pass() noexcept {
-  s_.scratch_ = plan_stop(s_.set_, s_.job_.limits().deceleration, s_.job_.limits().jerk);
+  s_.scratch_ = plan_stop(s_.set_, s_.job_.goal.limits().deceleration, s_.job_.goal.limits().jerk);
   if (!s_.scratch_.ok()) return;
   s_.job_.replan(s_.scratch_, true);
-  s_.job_.set_target(s_.scratch_.final_state().p);
-  s_.job_.set_target_velocity(0.0);
+  s_.job_.goal.set_target(s_.scratch_.final_state().p);
+  s_.job_.goal.set_target_velocity(0.0);
   s_.target_ = s_.scratch_.final_state().p;
   s_.monitors_.reset_windows();
 }
@@ -206,22 +206,22 @@ double BufferedCommands::next_direction(const plc::Command& next, double from, d
 void BufferedCommands::plan_blend(double level) noexcept {
   if (!s_.buffer_.waiting || !blending_mode(s_.buffer_.command.buffer_mode)) return;
   if (s_.job_.kind() != JobKind::kPosition || !s_.job_.final_table() ||
-      s_.job_.generation_ended()) {
+      s_.job_.table.generation_ended()) {
     return;
   }
   if (!(level > 0.0)) return;
   const plc::Command& next = s_.buffer_.command;
   const KinematicState from = s_.basic_state();
   // The job's end, moved by what ended superpositions left (as apply_override()).
-  const double target = s_.job_.target() + (from.p - s_.job_.state().p);
-  const double direction = s_.job_.direction();
+  const double target = s_.job_.goal.target() + (from.p - s_.job_.table.state().p);
+  const double direction = s_.job_.goal.direction();
   double end = 0.0;
   if (next_direction(next, target, direction, end) != direction) return;  // reversal: at rest
 
-  const double factor = level / s_.job_.user_velocity();  // the override in force
-  double wanted =
-      std::min(blend_velocity(next.buffer_mode, s_.job_.user_velocity(), next.velocity) * factor,
-               s_.config_.max_velocity);
+  const double factor = level / s_.job_.goal.user_velocity();  // the override in force
+  double wanted = std::min(
+      blend_velocity(next.buffer_mode, s_.job_.goal.user_velocity(), next.velocity) * factor,
+      s_.config_.max_velocity);
   if (std::isfinite(end)) {
     // Not faster than the next positioning can still stop from before its own end.
     const double room = std::abs(end - target);
@@ -239,7 +239,7 @@ void BufferedCommands::plan_blend(double level) noexcept {
   }
   if (!(wanted > 0.0)) return;
 
-  Limits limits = s_.job_.limits();
+  Limits limits = s_.job_.goal.limits();
   limits.velocity = level;
   double speed = wanted;
   if (!plan_pass(from, target, direction, speed, limits)) {
@@ -257,8 +257,8 @@ void BufferedCommands::plan_blend(double level) noexcept {
   }
   s_.job_.replan(s_.scratch_, true);
   s_.stack_.rebase();  // planned from s_.basic_state(): the held offset is in the table now
-  s_.job_.set_target(target);
-  s_.job_.set_target_velocity(direction * level);
+  s_.job_.goal.set_target(target);
+  s_.job_.goal.set_target_velocity(direction * level);
   s_.target_ = target;
 }
 

@@ -161,7 +161,7 @@ ErrorCode AxisCommands::check_start(const plc::Command& command, bool has_positi
   if (s_.locked_) return ErrorCode::kMotionCommandsLocked;
   // Seed 000 §2.6: external generation may join a running PTP motion (relative), "the opposite
   // case is not permitted".
-  if (s_.stack_.external().enabled()) return ErrorCode::kStartTypeNotAllowed;
+  if (s_.stack_.external.enabled()) return ErrorCode::kStartTypeNotAllowed;
   if (!known_buffer_mode(command.buffer_mode)) return ErrorCode::kBufferModeNotSupported;
   if (has_position && !std::isfinite(command.position)) return ErrorCode::kPositionNotFinite;
   return check_dynamics(command, limits);
@@ -193,7 +193,7 @@ ErrorCode AxisCommands::start_to_target(uint16_t number, double target,
   const bool at_rest = s_.set_.v == 0.0 && s_.set_.a == 0.0;
   if (at_rest && (distance == 0.0 || std::abs(distance) < s_.config_.encoder_increment)) {
     // Seed 000 §2.1: no start for a path shorter than one encoder increment — a warning.
-    s_.channel_.warn(Warning::kMovementSmallerThanIncrement);
+    s_.channel_.warnings.warn(Warning::kMovementSmallerThanIncrement);
     s_.channel_.answer(number, CommandState::kDone);
     return ErrorCode::kNone;
   }
@@ -258,10 +258,10 @@ ErrorCode AxisCommands::start_halt_or_stop(const plc::Command& command) noexcept
   const MasterJob& running = s_.running_motion();
   const bool motion =
       running.is_motion() || running.kind() == JobKind::kHalt || running.kind() == JobKind::kStop;
-  Limits limits{motion ? running.limits().velocity : s_.config_.max_velocity,
-                motion ? running.limits().acceleration : s_.config_.acceleration,
-                motion ? running.limits().deceleration : s_.config_.deceleration,
-                motion ? running.limits().jerk : s_.config_.jerk};
+  Limits limits{motion ? running.goal.limits().velocity : s_.config_.max_velocity,
+                motion ? running.goal.limits().acceleration : s_.config_.acceleration,
+                motion ? running.goal.limits().deceleration : s_.config_.deceleration,
+                motion ? running.goal.limits().jerk : s_.config_.jerk};
   // Seed 000 §2.2 "Emergency stop": the command's deceleration and jerk replace the running
   // motion's only when both are larger, and never in the brake phase (the braking that runs goes
   // on: a stop with the running motion's values continues it).

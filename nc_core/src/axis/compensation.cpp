@@ -15,9 +15,9 @@ constexpr double kEndTolerance = 1e-9;  // s, relative to max(1 s, T)
 constexpr double kIncompleteTolerance = 1e-9;
 }  // namespace
 
-ErrorCode Compensation::check(double distance, double length, double process_velocity,
-                              double velocity_diff, double acceleration,
-                              double deceleration) noexcept {
+ErrorCode check_compensation(double distance, double length, double process_velocity,
+                             double velocity_diff, double acceleration,
+                             double deceleration) noexcept {
   if (!std::isfinite(distance)) return ErrorCode::kPositionNotFinite;
   if (!std::isfinite(length) || !std::isfinite(process_velocity) || !std::isfinite(velocity_diff) ||
       !std::isfinite(acceleration) || !std::isfinite(deceleration)) {

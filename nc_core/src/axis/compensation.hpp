@@ -22,16 +22,17 @@
 
 namespace nc::detail {
 
+// The start parameters of seed 000 §2.5 ("Start parameters"): D != 0, L > 0, VP > 0, VK > 0,
+// AK+ > 0, AK- > 0. First broken rule: D not finite kPositionNotFinite, another not finite
+// kParameterNotFinite, D == 0 kCompensationParametersInvalid, L 0x4270, VK / VP 0x4271,
+// AK+ / AK- 0x4272; |D| and each of the others must also lie in [1e-9, 1e12] (the planner's
+// numeric range, profile/validate.hpp), else the same codes.
+ErrorCode check_compensation(double distance, double length, double process_velocity,
+                             double velocity_diff, double acceleration,
+                             double deceleration) noexcept;
+
 class Compensation {
  public:
-  // The start parameters of seed 000 §2.5 ("Start parameters"): D != 0, L > 0, VP > 0, VK > 0,
-  // AK+ > 0, AK- > 0. First broken rule: D not finite kPositionNotFinite, another not finite
-  // kParameterNotFinite, D == 0 kCompensationParametersInvalid, L 0x4270, VK / VP 0x4271,
-  // AK+ / AK- 0x4272; |D| and each of the others must also lie in [1e-9, 1e12] (the planner's
-  // numeric range, profile/validate.hpp), else the same codes.
-  static ErrorCode check(double distance, double length, double process_velocity,
-                         double velocity_diff, double acceleration, double deceleration) noexcept;
-
   // Plans the compensation over `length` (already limited to the remaining distance) and starts
   // it; nothing changes on an error. `speed` is the basic motion's |v| at the start; the
   // trapezoid is sampled at k·cycle_time, k = 1, 2, … from the next advance() on.
@@ -64,7 +65,6 @@ class Compensation {
   double done() const noexcept { return direction_ * state_.p; }  // compensated so far
   double length() const noexcept { return length_; }              // L in use
   double velocity_diff() const noexcept { return trapezoid_.peak_velocity(); }  // signed peak
-  double requested() const noexcept { return requested_; }
   // Less than the requested D is (or will be) done: the planned D is smaller, or the end came
   // with less than D (velocity scaling, compensation stop, end of path).
   bool planned_incomplete() const noexcept { return !trapezoid_.complete(); }

@@ -17,7 +17,7 @@ using plc::CommandType;
 
 bool SlaveCoupling::at_rest_for_coupling() const noexcept {
   return !s_.job_.active() && !s_.homing_.active() && s_.set_.v == 0.0 && s_.set_.a == 0.0 &&
-         !s_.stack_.compensation().running() && !s_.stack_.external().enabled();
+         !s_.stack_.compensation.running() && !s_.stack_.external.enabled();
 }
 
 bool SlaveCoupling::refused_while_coupled(CommandType type) noexcept {
@@ -138,7 +138,7 @@ bool SlaveCoupling::decoupling_chain(CouplingPort& port, DecouplingChain& chain,
   // The head's plan is what goes on: without a PTP job there is none to copy (an absolute
   // external generator, a compensation moving a held axis).
   if (!axis->job_.active() || axis->source() != SetValueSource::kPtpJob) return false;
-  if (axis->job_.chain_depth() + up.count > DecouplingChain::kMaxLevels) return false;
+  if (axis->job_.table.chain_depth() + up.count > DecouplingChain::kMaxLevels) return false;
   chain.count = 0;
   for (std::size_t i = up.count; i-- > 0;)
     (void)chain.push(up.levels[i].factor, up.levels[i].offset);
@@ -173,16 +173,16 @@ ErrorCode SlaveCoupling::gear_out(const plc::Command& command, CouplingPort& por
   // override 100 % = |last factor| × the head's target velocity; what comes next (stop, new end
   // position, override) uses the axis's own dynamics. The job has no command number of its own.
   const double scale = std::abs(chain.total_factor());
-  const Limits own{scale * head->job_.user_velocity(), s_.config_.acceleration,
+  const Limits own{scale * head->job_.goal.user_velocity(), s_.config_.acceleration,
                    s_.config_.deceleration, s_.config_.jerk};
-  const uint32_t override_value = s_.job_.override_value();
+  const uint32_t override_value = s_.job_.online.override_value();
   // The slave's own compensation is a level of the chain now: it never completes.
   s_.fold_superpositions(CommandState::kAborted);
   s_.job_ = head->job_;
   s_.job_.follow(chain, 0, own, override_value);
   s_.base_ = s_.set_;
   if (s_.job_.kind() == JobKind::kEmergencyStop) s_.job_.set_kind(JobKind::kHalt);  // no error here
-  s_.target_ = s_.job_.kind() == JobKind::kVelocity ? s_.set_.p : s_.job_.target();
+  s_.target_ = s_.job_.kind() == JobKind::kVelocity ? s_.set_.p : s_.job_.goal.target();
   return ErrorCode::kNone;
 }
 

@@ -40,7 +40,7 @@ ErrorCode SlaveCoupling::gear_in_dyn(const plc::Command& command, CouplingPort& 
   // Seed 000 §3.3: stable for AccBound >= max|Cf| × max(A+, A-) of the master. Accepted below
   // it, with a warning (the same check runs for every new factor the PLC commands).
   if (command.acceleration < std::abs(command.ratio) * master_acceleration) {
-    s_.channel_.warn(Warning::kAccBoundBelowStability);
+    s_.channel_.warnings.warn(Warning::kAccBoundBelowStability);
   }
   return ErrorCode::kNone;  // answered kActive; the block shows InGear from NcToPlc.GearRatio
 }
@@ -59,11 +59,11 @@ void SlaveCoupling::step_cyclic_factor(const AxisSnapshot& master) noexcept {
   const double written = s_.channel_.ref().PlcToNc.GearRatio1;
   if (written != link.commanded) {
     if (check_gear_ratio(written) != ErrorCode::kNone) {
-      s_.channel_.warn(Warning::kGearRatio1NotTaken);  // the factor commanded before stays
+      s_.channel_.warnings.warn(Warning::kGearRatio1NotTaken);  // the factor commanded before stays
     } else {
       link.commanded = written;
       if (link.acc_bound < std::abs(written) * link.master_acceleration) {
-        s_.channel_.warn(Warning::kAccBoundBelowStability);
+        s_.channel_.warnings.warn(Warning::kAccBoundBelowStability);
       }
     }
   }

@@ -90,7 +90,7 @@ ErrorCode GroupErrors::push_by_hand(double velocity) noexcept {
 }
 
 void GroupErrors::reset_error() noexcept {
-  s_.channel_.clear_warnings();
+  s_.channel_.warnings.clear_all();
   if (!s_.channel_.has_error()) return;
   s_.channel_.clear_error();
   s_.propagation_.cancel();  // C7: a reset before the delay has run out: no group reaction

@@ -106,17 +106,65 @@ void MasterJob::start(JobKind kind, uint16_t number, const Profile& profile, dou
                       double target_velocity, const Limits& limits) noexcept {
   kind_ = kind;
   number_ = number;
-  target_ = target;
-  target_velocity_ = target_velocity;
-  limits_ = limits;
-  reduced_velocity_ = limits.velocity;
-  direction_ = target_velocity < 0.0 ? -1.0 : 1.0;
-  handled_override_ = override_;
-  activation_ = Activation{};
-  install(profile, true);
+  goal.start(target, target_velocity, limits);
+  online.start();
+  final_ = true;
+  table.install(profile);
+  has_brake_phase_ = kind == JobKind::kPosition;
+  brake_start_ = has_brake_phase_ ? brake_start(profile) : 0.0;
 }
 
-void MasterJob::install(const Profile& profile, bool final) noexcept {
+void MasterJob::replan(const Profile& profile, bool final) noexcept {
+  final_ = final;
+  table.install(profile);
+  has_brake_phase_ = final && kind_ == JobKind::kPosition;
+  brake_start_ = has_brake_phase_ ? brake_start(profile) : 0.0;
+}
+
+void MasterJob::clear() noexcept {
+  kind_ = JobKind::kNone;
+  number_ = 0;
+  final_ = true;
+  has_brake_phase_ = false;
+  table.clear();
+  online.activation() = Activation{};
+}
+
+void MasterJob::follow(const DecouplingChain& chain, uint16_t number, const Limits& limits,
+                       uint32_t override_value) noexcept {
+  number_ = number;
+  goal.follow(chain, limits);
+  online.follow(chain, override_value);
+  table.follow(chain);
+}
+
+bool MasterJob::passes_in_next_cycle(double cycle_time) const noexcept {
+  if (!passing() || table.generation_ended()) return false;
+  const double end = table.duration();
+  return table.sample_time(cycle_time) + cycle_time >= end - kEndTolerance * std::max(1.0, end);
+}
+
+void JobGoal::follow(const DecouplingChain& chain, const Limits& limits) noexcept {
+  const double f = chain.total_factor();
+  target_ = chain.position(target_);
+  target_velocity_ = chain.velocity(target_velocity_);
+  reduced_velocity_ *= std::abs(f);
+  direction_ = f < 0.0 ? -direction_ : direction_;
+  limits_ = limits;
+}
+
+void JobOnline::follow(const DecouplingChain& chain, uint32_t override_value) noexcept {
+  if (activation_.armed) {
+    const double f = chain.total_factor();
+    activation_.position = chain.position(activation_.position);
+    activation_.direction = f < 0.0 ? -activation_.direction : activation_.direction;
+    activation_.velocity *= std::abs(f);
+  }
+  override_ = override_value;
+  handled_override_ = override_value;
+}
+
+void JobTable::install(const Profile& profile) noexcept {
   profile_ = profile;
   chain_.count = 0;
   k_ = 0;
@@ -124,80 +172,37 @@ void MasterJob::install(const Profile& profile, bool final) noexcept {
   ended_ = false;
   reached_ = false;
   jerk_ = 0.0;
-  final_ = final;
   state_ = profile.start_state();
-  has_brake_phase_ = final && kind_ == JobKind::kPosition;
-  brake_start_ = has_brake_phase_ ? brake_start(profile) : 0.0;
 }
 
-void MasterJob::follow(const DecouplingChain& chain, uint16_t number, const Limits& limits,
-                       uint32_t override_value) noexcept {
-  const double f = chain.total_factor();
-  const double scale = std::abs(f);
-  number_ = number;
-  target_ = chain.position(target_);
-  target_velocity_ = chain.velocity(target_velocity_);
-  reduced_velocity_ *= scale;
-  direction_ = f < 0.0 ? -direction_ : direction_;
-  limits_ = limits;
-  if (activation_.armed) {
-    activation_.position = chain.position(activation_.position);
-    activation_.direction = f < 0.0 ? -activation_.direction : activation_.direction;
-    activation_.velocity *= scale;
-  }
-  override_ = override_value;
-  handled_override_ = override_value;
+void JobTable::clear() noexcept {
+  k_ = 0;
+  ended_ = false;
+  reached_ = false;
+  jerk_ = 0.0;
+}
+
+void JobTable::follow(const DecouplingChain& chain) noexcept {
   state_ = chain.state(state_);
-  jerk_ *= f;
-  // The chain of this job comes first (a former master that was itself decoupled online).
+  jerk_ *= chain.total_factor();
+  // The chain of this table comes first (a former master that was itself decoupled online).
   DecouplingChain joined = chain_;
   for (std::size_t i = 0; i < chain.count; ++i)
     (void)joined.push(chain.levels[i].factor, chain.levels[i].offset);
   chain_ = joined;
 }
 
-void MasterJob::replan(const Profile& profile, bool final) noexcept {
-  install(profile, final);
-}
-
-bool MasterJob::passes_in_next_cycle(double cycle_time) const noexcept {
-  if (!passing() || ended_) return false;
-  const double end = profile_.duration();
-  return sample_time(cycle_time) + cycle_time >= end - kEndTolerance * std::max(1.0, end);
-}
-
-void MasterJob::mark_brake_phase() noexcept {
-  has_brake_phase_ = true;
-  brake_start_ = 0.0;
-}
-
-void MasterJob::clear() noexcept {
-  kind_ = JobKind::kNone;
-  number_ = 0;
-  k_ = 0;
-  ended_ = false;
-  reached_ = false;
-  final_ = true;
-  has_brake_phase_ = false;
-  jerk_ = 0.0;
-  activation_ = Activation{};
-}
-
-void MasterJob::set_levels(double user_velocity, double reduced_velocity,
-                           double direction) noexcept {
-  limits_.velocity = user_velocity;
-  reduced_velocity_ = reduced_velocity;
-  direction_ = direction < 0.0 ? -1.0 : 1.0;
-}
-
 bool MasterJob::in_brake_phase(double cycle_time) const noexcept {
   if (!has_brake_phase_) return false;
-  if (ended_) return true;
-  const double t = sample_time(cycle_time);
+  if (table.generation_ended()) return true;
+  const double t = table.sample_time(cycle_time);
   return t >= brake_start_ - kEndTolerance * std::max(1.0, brake_start_);
 }
 
-KinematicState MasterJob::advance(double cycle_time) noexcept {
+KinematicState JobTable::advance(JobKind kind, bool final, double cycle_time) noexcept {
+  const auto passing = [&]() noexcept {
+    return kind == JobKind::kPosition && profile_.holds_velocity();
+  };
   if (ended_ && !passing()) {
     jerk_ = 0.0;
     state_ = chain_.state(profile_.final_state());
@@ -207,7 +212,7 @@ KinematicState MasterJob::advance(double cycle_time) noexcept {
   const double t = sample_time(cycle_time);
   const double end = profile_.duration();
   const bool at_end = t >= end - kEndTolerance * std::max(1.0, end);
-  if (kind_ == JobKind::kVelocity) {
+  if (kind == JobKind::kVelocity) {
     // The hold goes on past the end of the profile: at() extrapolates it. A hold at 0 (override
     // 0) is not "reached": InVelocity means moving at the commanded level.
     if (at_end) reached_ = profile_.final_state().v != 0.0;
@@ -219,7 +224,7 @@ KinematicState MasterJob::advance(double cycle_time) noexcept {
   }
   if (at_end) {
     // A rest for override 0 holds its end but does not end the job.
-    ended_ = final_;
+    ended_ = final;
     jerk_ = 0.0;
     // A pass goes on at its velocity.
     state_ = chain_.state(passing() ? profile_.at(t) : profile_.final_state());

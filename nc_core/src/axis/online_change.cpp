@@ -54,7 +54,7 @@ ErrorCode OnlineChange::check_new_target(double target) const noexcept {
     return ErrorCode::kTargetPositionNotAllowed;
   }
   if (s_.job_.kind() != JobKind::kPosition) return ErrorCode::kFunctionNotAllowed;
-  if (s_.stack_.compensation().running()) {
+  if (s_.stack_.compensation.running()) {
     return ErrorCode::kCompensationActive;  // seed 000 §2.3, §2.4
   }
   if (!s_.channel_.controller_enabled() || !s_.channel_.feed_enabled(target - s_.basic_state().p)) {
@@ -70,8 +70,10 @@ ErrorCode OnlineChange::new_position(const plc::Command& command) noexcept {
   if (const ErrorCode code = check_new_target(command.position); code != ErrorCode::kNone) {
     return code;
   }
-  if (!retarget(command.position, s_.job_.user_velocity())) return ErrorCode::kPlannerNoSolution;
-  s_.job_.activation() = Activation{};  // an instantaneous-only request deletes a pending one
+  if (!retarget(command.position, s_.job_.goal.user_velocity()))
+    return ErrorCode::kPlannerNoSolution;
+  s_.job_.online.activation() =
+      Activation{};  // an instantaneous-only request deletes a pending one
   s_.channel_.answer(command.number, plc::CommandState::kDone);
   return ErrorCode::kNone;
 }
@@ -94,7 +96,7 @@ ErrorCode OnlineChange::new_position_and_velocity(const plc::Command& command) n
   // The six cases of seed 000 §2.4 in the logical direction d (positions multiplied by d).
   const KinematicState now = s_.basic_state();
   double d = now.v > 0.0 ? 1.0 : (now.v < 0.0 ? -1.0 : 0.0);
-  if (d == 0.0) d = s_.job_.target() >= s_.job_.state().p ? 1.0 : -1.0;
+  if (d == 0.0) d = s_.job_.goal.target() >= s_.job_.table.state().p ? 1.0 : -1.0;
   const double pos = d * now.p;
   const double apos = d * command.activation_position;
   const double epos = d * command.position;
@@ -114,53 +116,55 @@ ErrorCode OnlineChange::new_position_and_velocity(const plc::Command& command) n
     next.direction = -d;
   }  // cases 3 and 6: back to EPos with VOld
 
-  if (!retarget(command.position, s_.job_.user_velocity())) return ErrorCode::kPlannerNoSolution;
-  s_.job_.activation() = next;  // replaces (or, when not armed, deletes) a pending activation
+  if (!retarget(command.position, s_.job_.goal.user_velocity()))
+    return ErrorCode::kPlannerNoSolution;
+  s_.job_.online.activation() =
+      next;  // replaces (or, when not armed, deletes) a pending activation
   s_.channel_.answer(command.number, plc::CommandState::kDone);
   return ErrorCode::kNone;
 }
 
 bool OnlineChange::retarget(double target, double velocity) noexcept {
   const KinematicState from = s_.basic_state();
-  Limits limits = s_.job_.limits();
+  Limits limits = s_.job_.goal.limits();
   limits.velocity = velocity;
   s_.scratch_ = plan_position(from, target, limits);
   if (!s_.scratch_.ok()) return false;
   const double reduced = reduced_level(s_.scratch_, velocity);
   const double direction = target >= from.p ? 1.0 : -1.0;
-  const uint32_t override_value = s_.job_.override_value();
+  const uint32_t override_value = s_.job_.online.override_value();
   const double level = override_level(velocity, reduced, override_value);
   bool final = true;
   if (override_value != plc::kOverrideFull && !plan_table(from, target, limits, level, final)) {
     return false;
   }
-  s_.job_.set_levels(velocity, reduced, direction);
-  s_.job_.set_handled_override(override_value);
+  s_.job_.goal.set_levels(velocity, reduced, direction);
+  s_.job_.online.set_handled_override(override_value);
   install_table(target, final, level);
   s_.monitors_.reset_windows();
   return true;
 }
 
 bool OnlineChange::activate_velocity(double velocity) noexcept {
-  const uint32_t override_value = s_.job_.override_value();
+  const uint32_t override_value = s_.job_.online.override_value();
   const double f = override_factor(override_value);
   if (f == 0.0) {
     // At override 0 the job rests: VNew becomes its V and acts when the override rises.
-    s_.job_.set_levels(velocity, velocity, s_.job_.direction());
+    s_.job_.goal.set_levels(velocity, velocity, s_.job_.goal.direction());
     return false;
   }
   const KinematicState from = s_.basic_state();
-  const double target = s_.job_.target() + (from.p - s_.job_.state().p);
+  const double target = s_.job_.goal.target() + (from.p - s_.job_.table.state().p);
   const double direction = target >= from.p ? 1.0 : -1.0;
   const double speed = std::abs(from.v);
-  Limits limits = s_.job_.limits();
+  Limits limits = s_.job_.goal.limits();
   double level = velocity * f;
   for (int attempt = 0; attempt < kVelocityAttempts; ++attempt) {
     limits.velocity = level;
     s_.scratch_ = plan_position(from, target, limits);
     if (s_.scratch_.ok() && reaches_level(s_.scratch_, level)) {
-      s_.job_.set_levels(velocity, level / f, direction);
-      s_.job_.set_handled_override(override_value);
+      s_.job_.goal.set_levels(velocity, level / f, direction);
+      s_.job_.online.set_handled_override(override_value);
       install_table(target, true, level);
       return true;
     }
@@ -173,10 +177,10 @@ void OnlineChange::install_table(double target, bool final, double level) noexce
   s_.job_.replan(s_.scratch_, final);
   s_.stack_.rebase();  // planned from s_.basic_state(): the held offset is in the table now
   if (s_.job_.kind() == JobKind::kPosition) {
-    s_.job_.set_target(target);
+    s_.job_.goal.set_target(target);
     s_.target_ = target;
   }
-  s_.job_.set_target_velocity(final ? s_.job_.direction() * level : 0.0);
+  s_.job_.goal.set_target_velocity(final ? s_.job_.goal.direction() * level : 0.0);
   if (final)
     BufferedCommands(s_).plan_blend(
         level);  // a blending command waits: the new table passes its target

@@ -25,11 +25,11 @@ class OnlineChange : public AxisPart {
     const uint32_t value = s_.channel_.ref().PlcToNc.Override;
     if (value > plc::kOverrideFull) {
       // Not a percentage: not taken. The last valid value stays in force, the warning says why.
-      s_.channel_.warn(Warning::kOverrideNotAllowed);
+      s_.channel_.warnings.warn(Warning::kOverrideNotAllowed);
       return;
     }
-    s_.channel_.clear_warning(Warning::kOverrideNotAllowed);
-    s_.job_.set_override(value);
+    s_.channel_.warnings.clear(Warning::kOverrideNotAllowed);
+    s_.job_.online.set_override(value);
   }
   // Phase a, last: the override and a due new velocity act on the running job (inline: it runs
   // in every cycle of a motion job).
@@ -39,7 +39,7 @@ class OnlineChange : public AxisPart {
       return;
     }
     bool replanned = false;
-    Activation& activation = s_.job_.activation();
+    Activation& activation = s_.job_.online.activation();
     if (s_.job_.kind() == JobKind::kPosition && activation.armed) {
       const bool due = activation.immediate ||
                        (activation.direction * (s_.set_.p - activation.position) >= 0.0 &&
@@ -49,7 +49,8 @@ class OnlineChange : public AxisPart {
         replanned = activate_velocity(activation.velocity);
       }
     }
-    if (!replanned && s_.job_.override_value() != s_.job_.handled_override()) apply_override();
+    if (!replanned && s_.job_.online.override_value() != s_.job_.online.handled_override())
+      apply_override();
   }
   // A positioning / velocity job planned from set_ with the override in force, then accept().
   ErrorCode start_positioning(uint16_t number, double target, const Limits& limits) noexcept;

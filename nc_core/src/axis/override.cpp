@@ -41,9 +41,9 @@ bool keeps_table_type(int override_type) noexcept {
 Limits with_running_jerk(const Limits& limits, const KinematicState& from, const MasterJob& running,
                          double max_velocity) noexcept {
   Limits l = limits;
-  if (!running.active() || !(running.limits().jerk > l.jerk)) return l;
+  if (!running.active() || !(running.goal.limits().jerk > l.jerk)) return l;
   const double peak = std::abs(from.v + from.a * std::abs(from.a) / (2.0 * l.jerk));
-  if (peak > max_velocity) l.jerk = running.limits().jerk;
+  if (peak > max_velocity) l.jerk = running.goal.limits().jerk;
   return l;
 }
 
@@ -77,7 +77,7 @@ ErrorCode OnlineChange::start_positioning(uint16_t number, double target,
   if (!s_.scratch_.ok()) return s_.scratch_.error();
   const double reduced = reduced_level(s_.scratch_, planned.velocity);
   const double direction = target >= s_.set_.p ? 1.0 : -1.0;
-  const uint32_t override_value = s_.job_.override_value();
+  const uint32_t override_value = s_.job_.online.override_value();
   const double level = override_level(planned.velocity, reduced, override_value);
   bool final = true;
   if (override_value != plc::kOverrideFull && !plan_table(s_.set_, target, planned, level, final)) {
@@ -85,7 +85,7 @@ ErrorCode OnlineChange::start_positioning(uint16_t number, double target,
   }
   s_.accept(JobKind::kPosition, number, s_.scratch_, target, final ? direction * level : 0.0,
             planned);
-  s_.job_.set_levels(planned.velocity, reduced, direction);
+  s_.job_.goal.set_levels(planned.velocity, reduced, direction);
   if (!final) s_.job_.replan(s_.scratch_, false);  // a start at override 0 waits at rest
   return ErrorCode::kNone;
 }
@@ -96,32 +96,32 @@ ErrorCode OnlineChange::start_continuous(uint16_t number, double velocity,
       with_running_jerk(limits, s_.set_, s_.running_motion(), s_.config_.max_velocity);
   const double direction = velocity < 0.0 ? -1.0 : 1.0;
   const double speed = std::abs(velocity);
-  const double level = speed * override_factor(s_.job_.override_value());
+  const double level = speed * override_factor(s_.job_.online.override_value());
   s_.scratch_ = plan_velocity(s_.set_, direction * level, planned);
   if (!s_.scratch_.ok()) return s_.scratch_.error();
   s_.accept(JobKind::kVelocity, number, s_.scratch_, s_.target_, direction * level, planned);
-  s_.job_.set_levels(speed, speed, direction);
+  s_.job_.goal.set_levels(speed, speed, direction);
   return ErrorCode::kNone;
 }
 
 void OnlineChange::apply_override() noexcept {
   // Answered once: a change that is refused (brake phase, types 1 and 2) is not retried
   // (seed 000 §2.1 "In case of failure, the function is not called again automatically").
-  s_.job_.set_handled_override(s_.job_.override_value());
+  s_.job_.online.set_handled_override(s_.job_.online.override_value());
   const KinematicState from = s_.basic_state();
-  const double level =
-      override_level(s_.job_.user_velocity(), s_.job_.reduced_velocity(), s_.job_.override_value());
+  const double level = override_level(s_.job_.goal.user_velocity(), s_.job_.goal.reduced_velocity(),
+                                      s_.job_.online.override_value());
   if (s_.job_.kind() == JobKind::kVelocity) {
-    s_.scratch_ = plan_velocity(from, s_.job_.direction() * level, s_.job_.limits());
-    if (s_.scratch_.ok()) install_table(s_.job_.target(), true, level);
+    s_.scratch_ = plan_velocity(from, s_.job_.goal.direction() * level, s_.job_.goal.limits());
+    if (s_.scratch_.ok()) install_table(s_.job_.goal.target(), true, level);
     return;
   }
   const bool resting = !s_.job_.final_table();
   if (!resting && s_.job_.in_brake_phase(s_.cycle_time_)) return;  // seed 000 §2.2
   // The job's end, moved by what ended superpositions left (s_.basic_state() includes it).
-  const double target = s_.job_.target() + (from.p - s_.job_.state().p);
+  const double target = s_.job_.goal.target() + (from.p - s_.job_.table.state().p);
   bool final = true;
-  if (!plan_table(from, target, s_.job_.limits(), level, final)) return;
+  if (!plan_table(from, target, s_.job_.goal.limits(), level, final)) return;
   if (!final) {
     if (resting) return;
     // Override 0: rest on the path. A rest that would pass the target means the braking to the

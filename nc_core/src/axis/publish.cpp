@@ -42,9 +42,9 @@ void ServoAxis::phase_publish(uint64_t cycle_counter) noexcept {
   out.ModuloSetPos = modulo(command.p, modulo_factor_);
   out.TargetPos = target_;
   out.TargetVelo = target_velocity();
-  out.CompensationDistance = stack_.compensation().done();  // travel-relative, as D
-  out.CompensationLength = stack_.compensation().length();
-  out.CompensationVelocityDiff = stack_.compensation().velocity_diff();
+  out.CompensationDistance = stack_.compensation.done();  // travel-relative, as D
+  out.CompensationLength = stack_.compensation.length();
+  out.CompensationVelocityDiff = stack_.compensation.velocity_diff();
   channel_.publish(static_cast<int32_t>(index_));
   // A gear slave, or an HLI target (a list in force); a gear master, or an HLI source.
   const bool slave = slave_link_.coupled || slave_link_.detached || hli_target();
@@ -57,9 +57,9 @@ void ServoAxis::phase_publish(uint64_t cycle_counter) noexcept {
   out.CycleCounter = static_cast<uint32_t>(cycle_counter);
 
   // Constant velocity: a velocity job at its level, or the cruise phase of a positioning.
-  const double a_eps = 1e-9 * job_.limits().acceleration + 1e-12;
-  const bool constant_velocity = (kind == JobKind::kVelocity && job_.velocity_reached()) ||
-                                 (kind == JobKind::kPosition && !job_.generation_ended() &&
+  const double a_eps = 1e-9 * job_.goal.limits().acceleration + 1e-12;
+  const bool constant_velocity = (kind == JobKind::kVelocity && job_.table.velocity_reached()) ||
+                                 (kind == JobKind::kPosition && !job_.table.generation_ended() &&
                                   set_.v != 0.0 && std::abs(set_.a) <= a_eps && set_jerk_ == 0.0);
 
   // Bits or-ed in without branches (every bit starts at 0).
@@ -78,8 +78,8 @@ void ServoAxis::phase_publish(uint64_t cycle_counter) noexcept {
   set_bit(plc::kStateNegativeDirection, set_.v < 0.0);
   set_bit(plc::kStateHomingBusy, homing_.active());
   set_bit(plc::kStateConstantVelocity, constant_velocity);
-  set_bit(plc::kStateCompensating, stack_.compensation().running());
-  set_bit(plc::kStateExtSetPointGenEnabled, stack_.external().enabled());
+  set_bit(plc::kStateCompensating, stack_.compensation.running());
+  set_bit(plc::kStateExtSetPointGenEnabled, stack_.external.enabled());
   set_bit(plc::kStateCoupled, slave);
   set_bit(plc::kStateContinuousMotion, kind == JobKind::kVelocity);
   set_bit(plc::kStatePtpMode, true);

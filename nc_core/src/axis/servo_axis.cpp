@@ -148,7 +148,7 @@ void AxisMonitoring::check_enables() noexcept {
   }
   // Feed enable removed in the direction of travel: the axis stops on its error ramp (also when
   // external setpoints move it; a coupled slave's error stops its group, see Kernel).
-  if ((a.job_.is_motion() || a.homing_.active() || a.stack_.external().enabled() ||
+  if ((a.job_.is_motion() || a.homing_.active() || a.stack_.external.enabled() ||
        a.slave_link_.coupled) &&
       !a.channel_.has_error()) {
     if (a.set_.v > 0.0 && !a.channel_.feed_enabled(1.0)) {
@@ -179,10 +179,10 @@ void AxisMonitoring::run_monitors() noexcept {
   // The windows count only once set-value generation rests: the job has ended and the external
   // generator (seed 000 §2.6) is not feeding a motion (direction ±1), so a fed motion passing
   // through its target window is not "in target position".
-  const bool settled =
-      a.channel_.controller_enabled() && !a.stack_.external().moving() && !a.slave_link_.coupled &&
-      !a.homing_.active() &&
-      (!a.job_.active() || (a.job_.kind() != JobKind::kVelocity && a.job_.generation_ended()));
+  const bool settled = a.channel_.controller_enabled() && !a.stack_.external.moving() &&
+                       !a.slave_link_.coupled && !a.homing_.active() &&
+                       (!a.job_.active() ||
+                        (a.job_.kind() != JobKind::kVelocity && a.job_.table.generation_ended()));
   a.monitors_.windows(actual - a.drive_offset_, a.target_, settled);  // in program coordinates
 }
 
@@ -203,25 +203,26 @@ void AxisMonitoring::finish_job() noexcept {
     case JobKind::kPosition:
       // Done = set-value generation ended and the target window reached (or switched off). A
       // pass (blending) is done when the waiting command takes over (command_buffer.cpp).
-      if (a.job_.generation_ended() && !a.job_.passing() && a.monitors_.in_target_position()) {
+      if (a.job_.table.generation_ended() && !a.job_.passing() &&
+          a.monitors_.in_target_position()) {
         if (own) a.channel_.answer_current(CommandState::kDone);
         a.job_.clear();
       }
       break;
     case JobKind::kVelocity:
-      if (a.job_.velocity_reached() && a.channel_.cmd_state() == CommandState::kActive) {
+      if (a.job_.table.velocity_reached() && a.channel_.cmd_state() == CommandState::kActive) {
         a.channel_.answer_current(CommandState::kReached);
       }
       break;
     case JobKind::kHalt:
     case JobKind::kStop:
-      if (a.job_.generation_ended()) {
+      if (a.job_.table.generation_ended()) {
         if (own) a.channel_.answer_current(CommandState::kDone);
         a.job_.clear();
       }
       break;
     case JobKind::kEmergencyStop:
-      if (a.job_.generation_ended()) a.job_.clear();
+      if (a.job_.table.generation_ended()) a.job_.clear();
       break;
   }
 }
@@ -238,7 +239,7 @@ void AxisMotion::generate_set_values(std::span<const AxisSnapshot> snapshots) no
     // compensation ends with the enable (the offset taken anew includes what it did).
     if (a.slave_link_.coupled) {
       a.slave_link_.retake_offset = true;
-      if (a.stack_.compensation().running() || a.stack_.held() != 0.0) {
+      if (a.stack_.compensation.running() || a.stack_.held() != 0.0) {
         a.fold_superpositions(CommandState::kAborted);
       }
     }
@@ -250,11 +251,11 @@ void AxisMotion::generate_set_values(std::span<const AxisSnapshot> snapshots) no
   switch (a.source()) {
     case SetValueSource::kPtpJob:
       a.base_ = a.job_.advance(a.cycle_time_);
-      a.set_jerk_ = a.job_.jerk();
+      a.set_jerk_ = a.job_.table.jerk();
       break;
     case SetValueSource::kExternalAbsolute: {
       const ExternalSetpoint::Step step =
-          a.stack_.external().take(a.channel_.ref().PlcToNc, a.cycle_time_);
+          a.stack_.external.take(a.channel_.ref().PlcToNc, a.cycle_time_);
       a.base_ = step.state;
       a.set_jerk_ = 0.0;
       not_finite = step.not_finite;

@@ -25,17 +25,17 @@ ErrorCode SuperpositionCommands::start_compensation(const plc::Command& command)
   // Seed 000 §2.5 general notes 8, 4, 5 and the start parameters, in this order.
   if (s_.config_.kind == AxisKind::kEncoder) return ErrorCode::kAxisKindNotAllowed;
   if (s_.channel_.has_error()) return ErrorCode::kAxisInErrorState;
-  if (s_.stack_.compensation().running()) return ErrorCode::kCompensationActive;  // no iteration
+  if (s_.stack_.compensation.running()) return ErrorCode::kCompensationActive;  // no iteration
   // The basic motion: the axis's job, or a coupled slave's master's path (seed 000 §3.2.4).
   const BasicPath path = s_.basic_path();
   if (path.stopping) return ErrorCode::kStopAlreadyActive;
   if (s_.locked_) return ErrorCode::kMotionCommandsLocked;
   const ErrorCode parameters =
-      Compensation::check(command.position, command.length, command.process_velocity,
-                          command.velocity, command.acceleration, command.deceleration);
+      check_compensation(command.position, command.length, command.process_velocity,
+                         command.velocity, command.acceleration, command.deceleration);
   if (parameters != ErrorCode::kNone) return parameters;
   // A compensation superimposes a running basic motion; none beside external generation.
-  if (s_.stack_.external().enabled()) return ErrorCode::kFunctionNotAllowed;
+  if (s_.stack_.external.enabled()) return ErrorCode::kFunctionNotAllowed;
   if (!path.running) return ErrorCode::kFunctionNotAllowed;
 
   // The direction of travel, to which D refers.
@@ -52,7 +52,7 @@ ErrorCode SuperpositionCommands::start_compensation(const plc::Command& command)
     length = std::fmin(length, remaining);
   }
   // Planned into a copy first: a refusal leaves the published values of the last one alone.
-  Compensation planned_compensation = s_.stack_.compensation();
+  Compensation planned_compensation = s_.stack_.compensation;
   const ErrorCode planned = planned_compensation.start(
       command.number, command.position, length, command.process_velocity, command.velocity,
       command.acceleration, command.deceleration, direction, std::abs(s_.base_.v), s_.cycle_time_);
@@ -64,17 +64,17 @@ ErrorCode SuperpositionCommands::start_compensation(const plc::Command& command)
       return ErrorCode::kTargetPositionNotAllowed;
     }
   }
-  s_.stack_.compensation() = planned_compensation;
+  s_.stack_.compensation = planned_compensation;
   s_.channel_.answer(command.number, CommandState::kActive);
-  s_.channel_.clear_warning(Warning::kCompensationIncomplete);  // a former compensation's warning
-  if (s_.stack_.compensation().planned_incomplete()) {
-    s_.channel_.warn(Warning::kCompensationIncomplete);
+  s_.channel_.warnings.clear(Warning::kCompensationIncomplete);  // a former compensation's warning
+  if (s_.stack_.compensation.planned_incomplete()) {
+    s_.channel_.warnings.warn(Warning::kCompensationIncomplete);
   }
   return ErrorCode::kNone;
 }
 
 ErrorCode SuperpositionCommands::stop_compensation(const plc::Command& command) noexcept {
-  const ErrorCode code = s_.stack_.compensation().request_stop();
+  const ErrorCode code = s_.stack_.compensation.request_stop();
   if (code != ErrorCode::kNone) return code;
   s_.channel_.answer(command.number, CommandState::kDone);
   return ErrorCode::kNone;
@@ -94,10 +94,10 @@ ErrorCode SuperpositionCommands::enable_external(const plc::Command& command) no
       !s_.channel_.feed_enabled(-1.0)) {
     return ErrorCode::kNoControllerOrFeedEnable;
   }
-  if (s_.stack_.external().taking() && s_.stack_.external().type() != type) {
+  if (s_.stack_.external.taking() && s_.stack_.external.type() != type) {
     return ErrorCode::kStartTypeNotAllowed;
   }
-  if (s_.stack_.compensation().running()) return ErrorCode::kCompensationActive;
+  if (s_.stack_.compensation.running()) return ErrorCode::kCompensationActive;
   if (is_stop(s_.job_.kind())) return ErrorCode::kStopAlreadyActive;
   if (s_.locked_) return ErrorCode::kMotionCommandsLocked;
   if (s_.homing_.active()) return ErrorCode::kFunctionNotAllowed;  // the homing sequence owns it
@@ -107,20 +107,20 @@ ErrorCode SuperpositionCommands::enable_external(const plc::Command& command) no
   // Relative: the target refers to the internal generator's target (or position). The target
   // lies within the planner's range like a move's (fuzz: 3.6e307 overflowed a slave's TargetPos).
   const double reference = s_.job_.kind() == JobKind::kPosition
-                               ? s_.job_.target() + s_.stack_.held()
+                               ? s_.job_.goal.target() + s_.stack_.held()
                                : s_.basic_state().p;
   const double target = type == Type::kAbsolute ? command.position : command.position + reference;
   if (const ErrorCode code = check_target(target); code != ErrorCode::kNone) return code;
   if (type == Type::kAbsolute) {
-    if (!s_.stack_.external().taking()) {
+    if (!s_.stack_.external.taking()) {
       s_.base_ = s_.set_;  // the external set values take over from here
       s_.stack_.drop_held();
     }
-    s_.stack_.external().enable(type, s_.set_, target, s_.config_.ext_setpoint_delay,
-                                s_.config_.max_velocity);
+    s_.stack_.external.enable(type, s_.set_, target, s_.config_.ext_setpoint_delay,
+                              s_.config_.max_velocity);
   } else {
-    s_.stack_.external().enable(type, KinematicState{}, target, s_.config_.ext_setpoint_delay,
-                                s_.config_.max_velocity);
+    s_.stack_.external.enable(type, KinematicState{}, target, s_.config_.ext_setpoint_delay,
+                              s_.config_.max_velocity);
   }
   s_.target_ = target;
   s_.monitors_.reset_windows();
@@ -129,7 +129,7 @@ ErrorCode SuperpositionCommands::enable_external(const plc::Command& command) no
 }
 
 ErrorCode SuperpositionCommands::disable_external(const plc::Command& command) noexcept {
-  s_.stack_.external().disable();  // disabling what is not enabled is not an error: nothing to do
+  s_.stack_.external.disable();  // disabling what is not enabled is not an error: nothing to do
   s_.channel_.answer(command.number, CommandState::kDone);
   return ErrorCode::kNone;
 }

@@ -13,28 +13,28 @@ SuperpositionStack::Result SuperpositionStack::superimpose(const Basic& basic,
   KinematicState total = basic.state;
   total.p += held_;
 
-  if (compensation_.running()) {
-    const KinematicState extra = compensation_.advance(basic.state.v, basic.state.a, cycle_time);
+  if (compensation.running()) {
+    const KinematicState extra = compensation.advance(basic.state.v, basic.state.a, cycle_time);
     total.p += extra.p;
     total.v += extra.v;
     total.a += extra.a;
     // Done when its time T is over; ended early by a compensation stop or when the basic
     // motion's path ends first (seed 000 §2.5 notes 6 and 7).
-    if (compensation_.time_over()) {
+    if (compensation.time_over()) {
       end_compensation(
-          channel, compensation_.stop_requested() ? CommandState::kAborted : CommandState::kDone);
+          channel, compensation.stop_requested() ? CommandState::kAborted : CommandState::kDone);
     } else if (!basic.path_running) {
       end_compensation(channel, CommandState::kAborted);
     }
   }
-  if ((compensation_.running() || held_ != 0.0) && basic.has_target && !external_.taking()) {
+  if ((compensation.running() || held_ != 0.0) && basic.has_target && !external.taking()) {
     // The superimposed distance moves the job's end (TargetPos, target window).
     r.target =
-        basic.target + held_ + (compensation_.running() ? compensation_.planned_offset() : 0.0);
+        basic.target + held_ + (compensation.running() ? compensation.planned_offset() : 0.0);
     r.target_moved = true;
   }
-  if (external_.taking() && external_.type() == Type::kRelative) {
-    const ExternalSetpoint::Step step = external_.take(in, cycle_time);
+  if (external.taking() && external.type() == Type::kRelative) {
+    const ExternalSetpoint::Step step = external.take(in, cycle_time);
     r.not_finite = step.not_finite;
     r.too_large = step.too_large;
     total.p += step.state.p;
@@ -48,7 +48,7 @@ SuperpositionStack::Result SuperpositionStack::superimpose(const Basic& basic,
 
 KinematicState SuperpositionStack::basic_state(const KinematicState& base,
                                                const KinematicState& set) const noexcept {
-  if (external_.taking() && external_.type() == Type::kAbsolute) return set;
+  if (external.taking() && external.type() == Type::kAbsolute) return set;
   KinematicState state = base;
   state.p += held_;
   return state;
@@ -56,8 +56,8 @@ KinematicState SuperpositionStack::basic_state(const KinematicState& base,
 
 KinematicState SuperpositionStack::stop_start_state(const KinematicState& set) const noexcept {
   KinematicState state = set;
-  if (compensation_.running()) {
-    const KinematicState& extra = compensation_.state();
+  if (compensation.running()) {
+    const KinematicState& extra = compensation.state();
     state.p -= extra.p;
     state.v -= extra.v;
     state.a -= extra.a;
@@ -66,39 +66,39 @@ KinematicState SuperpositionStack::stop_start_state(const KinematicState& set) c
 }
 
 void SuperpositionStack::end_compensation(AxisChannel& channel, CommandState state) noexcept {
-  held_ += compensation_.finish();
-  channel.answer(compensation_.number(), state);
-  if (compensation_.incomplete()) channel.warn(Warning::kCompensationIncomplete);
+  held_ += compensation.finish();
+  channel.answer(compensation.number(), state);
+  if (compensation.incomplete()) channel.warnings.warn(Warning::kCompensationIncomplete);
 }
 
 void SuperpositionStack::fold(AxisChannel& channel, CommandState state, ErrorCode code) noexcept {
-  if (compensation_.running()) {
+  if (compensation.running()) {
     // Its offset so far is in the set state, where the new job starts: nothing to hold.
-    compensation_.finish();
-    channel.answer(compensation_.number(), state, plc::to_id(code));
-    if (compensation_.incomplete()) channel.warn(Warning::kCompensationIncomplete);
+    compensation.finish();
+    channel.answer(compensation.number(), state, plc::to_id(code));
+    if (compensation.incomplete()) channel.warnings.warn(Warning::kCompensationIncomplete);
   }
-  external_.abort();
+  external.abort();
   held_ = 0.0;
 }
 
 void SuperpositionStack::on_stop() noexcept {
   // Planned from stop_start_state(): the held offset and the external offset are in the new
   // job. A stop requests the compensation stop at the same time (seed 000 §2.5).
-  external_.abort();
+  external.abort();
   held_ = 0.0;
-  if (compensation_.running()) (void)compensation_.request_stop();  // braking: goes on
+  if (compensation.running()) (void)compensation.request_stop();  // braking: goes on
 }
 
 bool SuperpositionStack::end_external() noexcept {
-  if (!external_.taking()) return false;
-  const bool absolute = external_.type() == Type::kAbsolute;
+  if (!external.taking()) return false;
+  const bool absolute = external.type() == Type::kAbsolute;
   if (absolute) {
     held_ = 0.0;
   } else {
-    held_ += external_.state().p;
+    held_ += external.state().p;
   }
-  external_.abort();
+  external.abort();
   return absolute;
 }
 

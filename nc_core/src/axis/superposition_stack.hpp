@@ -59,22 +59,22 @@ class SuperpositionStack {
   bool end_external() noexcept;
 
   // A superposition moves the axis while the basic motion holds.
-  bool moves_alone() const noexcept { return compensation_.running() || external_.taking(); }
+  bool moves_alone() const noexcept { return compensation.running() || external.taking(); }
   // Nothing on top: superimpose() would give the basic state (p + held, held ±0.0) and change
   // nothing else.
   bool empty() const noexcept { return held_ == 0.0 && !moves_alone(); }
   double held() const noexcept { return held_; }
-  Compensation& compensation() noexcept { return compensation_; }
-  const Compensation& compensation() const noexcept { return compensation_; }
-  ExternalSetpoint& external() noexcept { return external_; }
-  const ExternalSetpoint& external() const noexcept { return external_; }
 
  private:
   void end_compensation(AxisChannel& channel, plc::CommandState state) noexcept;
 
   double held_ = 0.0;  // offsets of ended superpositions, kept until the basic job changes
-  Compensation compensation_{};
-  ExternalSetpoint external_{};
+
+ public:
+  // The two superpositions, parts of their own: their commands start and stop them in place;
+  // superimpose(), fold() and end_external() keep them and the held offset consistent.
+  Compensation compensation{};
+  ExternalSetpoint external{};
 };
 
 }  // namespace nc::detail

@@ -46,7 +46,7 @@ ErrorCode AxisHoming::start_home(const plc::Command& command) noexcept {
   if (command.mode == plc::MC_Direct) {
     // The actual position becomes `home`; the set position moves with it, so nothing jumps.
     if (s_.job_.active() || s_.homing_.active() || s_.set_.v != 0.0 || s_.set_.a != 0.0 ||
-        s_.stack_.compensation().running() || s_.stack_.external().enabled()) {
+        s_.stack_.compensation.running() || s_.stack_.external.enabled()) {
       return ErrorCode::kHomingAxisMoving;
     }
     shift_position(home - s_.drive_.measured_position());
@@ -56,14 +56,14 @@ ErrorCode AxisHoming::start_home(const plc::Command& command) noexcept {
   }
 
   // MC_DefaultHoming: a motion start (aborting the running motion) in both search directions.
-  if (s_.stack_.external().enabled()) return ErrorCode::kStartTypeNotAllowed;
+  if (s_.stack_.external.enabled()) return ErrorCode::kStartTypeNotAllowed;
   // Its velocities are start velocities (seed 000 §2.1 table 2: not above Vmax or Vref).
   const double fastest =
       std::max(s_.config_.homing_velocity_to_cam, s_.config_.homing_velocity_off_cam);
   if (fastest > s_.config_.max_velocity || fastest > s_.config_.ref_velocity) {
     return ErrorCode::kVelocityNotAllowed;
   }
-  if (s_.stack_.compensation().running()) return ErrorCode::kCompensationActive;
+  if (s_.stack_.compensation.running()) return ErrorCode::kCompensationActive;
   if (!s_.channel_.feed_enabled(s_.config_.homing_cam_search_positive ? 1.0 : -1.0) ||
       !s_.channel_.feed_enabled(s_.config_.homing_sync_search_positive ? 1.0 : -1.0)) {
     return ErrorCode::kNoControllerOrFeedEnable;
@@ -85,7 +85,7 @@ ErrorCode AxisHoming::start_home(const plc::Command& command) noexcept {
   s_.target_ = s_.set_.p;
   s_.monitors_.reset_windows();
   s_.has_been_stopped_ = false;
-  s_.channel_.clear_warnings_except(Warning::kOverrideNotAllowed);
+  s_.channel_.warnings.clear_except(Warning::kOverrideNotAllowed);
   return ErrorCode::kNone;
 }
 

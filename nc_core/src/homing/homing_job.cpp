@@ -40,7 +40,7 @@ bool HomingJob::start(uint16_t number, const KinematicState& from, double home,
 HomingJob::Step HomingJob::advance(const Inputs& in, double cycle_time, Profile& scratch) noexcept {
   Step step;
   step.state = motion_.advance(cycle_time);
-  step.jerk = motion_.jerk();
+  step.jerk = motion_.table.jerk();
   travel_ += std::abs(step.state.p - last_position_);
   last_position_ = step.state.p;
 

@@ -55,7 +55,7 @@ class HomingJob {
   bool active() const noexcept { return phase_ != Phase::kIdle; }
   // Stopped at rest after the reference: the command is done.
   bool finished() const noexcept {
-    return phase_ == Phase::kStopping && motion_.generation_ended();
+    return phase_ == Phase::kStopping && motion_.table.generation_ended();
   }
   uint16_t number() const noexcept { return number_; }
   // The motion that samples the sequence (its limits: the running jerk for what aborts it).

@@ -52,7 +52,7 @@ bool HliPhase::begin_cycle() noexcept {
 plc::ErrorCode HliPhase::refusal(const ServoAxis& axis) noexcept {
   if (axis.core().channel_.has_error()) return plc::ErrorCode::kAxisInErrorState;
   if (!axis.core().channel_.controller_enabled()) return plc::ErrorCode::kNoControllerOrFeedEnable;
-  if (axis.core().stack_.external().enabled()) return plc::ErrorCode::kFunctionNotAllowed;
+  if (axis.core().stack_.external.enabled()) return plc::ErrorCode::kFunctionNotAllowed;
   return plc::ErrorCode::kNone;
 }
 

@@ -35,9 +35,9 @@ TwoSpeedAxis::TwoSpeedAxis(const AxisConfig& config, double cycle_time, AxisChan
 void TwoSpeedAxis::phase_commands() noexcept {
   const uint32_t override_value = channel_.ref().PlcToNc.Override;
   if (sequencer_.set_override(override_value) == ErrorCode::kNone) {
-    channel_.clear_warning(Warning::kOverrideNotAllowed);
+    channel_.warnings.clear(Warning::kOverrideNotAllowed);
   } else {
-    channel_.warn(Warning::kOverrideNotAllowed);  // not taken: the last valid value stays
+    channel_.warnings.warn(Warning::kOverrideNotAllowed);  // not taken: the last valid value stays
   }
   plc::CommandMailbox& mailbox = channel_.ref().Mailbox;
   if (mailbox.pending() != 0) {
@@ -61,7 +61,7 @@ void TwoSpeedAxis::handle(const plc::Command& command) noexcept {
       break;
     case CommandType::kReset:
       // As on a servo axis: not a job, answered at once; it also ends an MC_Stop lock.
-      channel_.clear_warnings();
+      channel_.warnings.clear_all();
       channel_.clear_error();
       locked_ = false;
       channel_.answer(command.number, CommandState::kDone);
@@ -110,7 +110,7 @@ ErrorCode TwoSpeedAxis::start(const plc::Command& command) noexcept {
   channel_.take_over(command.number, job_);
   job_ = command.number;
   has_been_stopped_ = false;
-  channel_.clear_warnings_except(Warning::kOverrideNotAllowed);
+  channel_.warnings.clear_except(Warning::kOverrideNotAllowed);
   monitors_.reset_windows();
   return ErrorCode::kNone;
 }

@@ -37,8 +37,61 @@ TwoSpeedParameters TwoSpeedParameters::from(const AxisConfig& c) noexcept {
   return p;
 }
 
+void TwoSpeedLeg::begin(double target, double direction, double velocity) noexcept {
+  // A positive looping distance approaches every target with negative velocity, a negative one
+  // with positive velocity: a target in the other direction is first passed by the distance.
+  const double loop = params_.looping_distance;
+  return_leg_ = loop != 0.0 && (loop > 0.0) == (direction > 0.0);
+  leg_end_ = return_leg_ ? target + loop : target;
+  target_ = target;
+  direction_ = direction;
+  velocity_ = velocity;
+  stopping_ = false;
+}
+
+bool TwoSpeedLeg::turn() noexcept {
+  if (!return_leg_ || stopping_) return false;
+  return_leg_ = false;
+  direction_ = -direction_;
+  leg_end_ = target_;
+  return true;
+}
+
+ErrorCode TwoSpeedLeg::set_override(uint32_t value) noexcept {
+  if (value > plc::kOverrideFull) return ErrorCode::kOverrideNotAllowed;
+  override_ = value;
+  return ErrorCode::kNone;
+}
+
+Velocity TwoSpeedLeg::wanted_velocity() const noexcept {
+  if (override_ < kOverrideStationary) return Velocity::kOff;
+  if (velocity_ > kRapidVelocityThreshold && override_ > kOverrideRapidAbove) {
+    return Velocity::kHigh;
+  }
+  return Velocity::kLow;
+}
+
+void MainTravelSpeed::drive(Velocity wanted, double delay) noexcept {
+  if (wanted != Velocity::kLow) {
+    velocity_ = wanted;
+    switching_ = false;
+    return;
+  }
+  // Rapid → creep always passes through the rapid-to-creep delay, also by override.
+  if (velocity_ == Velocity::kHigh) {
+    velocity_ = Velocity::kOff;
+    switching_ = true;
+    elapsed_ = 0.0;
+  }
+  if (switching_) {
+    if (!reached(elapsed_, delay)) return;
+    switching_ = false;
+  }
+  velocity_ = Velocity::kLow;
+}
+
 TwoSpeedSequencer::TwoSpeedSequencer(const AxisConfig& config)
-    : params_(TwoSpeedParameters::from(config)) {
+    : leg_(TwoSpeedParameters::from(config)) {
   validate_two_speed(config);
   write_image();
 }
@@ -72,8 +125,7 @@ void TwoSpeedSequencer::set_enabled(bool enabled) noexcept {
 
 void TwoSpeedSequencer::abort() noexcept {
   enter(Phase::kRest);
-  stopping_ = false;
-  return_leg_ = false;
+  leg_.end();
   pending_ = TwoSpeedEvent::kNone;
 }
 
@@ -87,20 +139,13 @@ ErrorCode TwoSpeedSequencer::start(double target, double velocity,
   if (!std::isfinite(actual_position)) return ErrorCode::kActualValueNotFinite;
   const double distance = target - actual_position;
   const double direction = distance > 0.0 ? 1.0 : -1.0;
-  const auto& side = direction > 0.0 ? params_.positive : params_.negative;
+  const TwoSpeedParameters& params = leg_.params();
+  const auto& side = direction > 0.0 ? params.positive : params.negative;
   // Seed 004: a start only when the distance is larger than the braking distance.
   if (!(std::abs(distance) > side.braking_distance)) {
     return ErrorCode::kTwoSpeedDistanceTooShort;
   }
-  // A positive looping distance approaches every target with negative velocity, a negative one
-  // with positive velocity: a target in the other direction is first passed by the distance.
-  const double loop = params_.looping_distance;
-  return_leg_ = loop != 0.0 && (loop > 0.0) == (direction > 0.0);
-  leg_end_ = return_leg_ ? target + loop : target;
-  target_ = target;
-  direction_ = direction;
-  velocity_ = velocity;
-  stopping_ = false;
+  leg_.begin(target, direction, velocity);
   started_ = true;
   pending_ = TwoSpeedEvent::kNone;
   enter(Phase::kBrakeRelease);
@@ -114,29 +159,22 @@ ErrorCode TwoSpeedSequencer::stop(double actual_position) noexcept {
     pending_ = TwoSpeedEvent::kStopped;
     return ErrorCode::kNone;
   }
-  if (stopping_) return ErrorCode::kNone;
+  if (leg_.stopping()) return ErrorCode::kNone;
   // Nothing travels yet, or no position to count the creep from: brake at once.
   if (phase_ == Phase::kBrakeRelease || !std::isfinite(actual_position)) {
     abort();
     pending_ = TwoSpeedEvent::kStopped;
     return ErrorCode::kNone;
   }
-  stopping_ = true;
-  stop_end_ = actual_position + direction_ * params_.creep_distance_stop;
+  leg_.stop_from(actual_position);
   if (phase_ == Phase::kMainTravel) {
-    const bool rapid = main_velocity_ == Velocity::kHigh || switching_;
-    const bool creep = main_velocity_ == Velocity::kLow;
+    const bool rapid = main_speed_.rapid();
+    const bool creep = main_speed_.velocity() == Velocity::kLow;
     // A stationary axis (override 0) has nothing to creep: it brakes.
     enter(rapid ? Phase::kHighToLowDelay : creep ? Phase::kCreep : Phase::kBrakeIncidence);
     fresh_ = true;
   }
   // In a braking phase the stop only brings the creep end closer (creep_off_reached).
-  return ErrorCode::kNone;
-}
-
-ErrorCode TwoSpeedSequencer::set_override(uint32_t value) noexcept {
-  if (value > plc::kOverrideFull) return ErrorCode::kOverrideNotAllowed;
-  override_ = value;
   return ErrorCode::kNone;
 }
 
@@ -154,7 +192,7 @@ TwoSpeedCycle TwoSpeedSequencer::step(double actual_position, double dt) noexcep
       fresh_ = false;
     } else {
       elapsed_ += dt;
-      if (switching_) switch_elapsed_ += dt;
+      main_speed_.tick(dt);
     }
     out = advance(actual_position);
   }
@@ -163,50 +201,11 @@ TwoSpeedCycle TwoSpeedSequencer::step(double actual_position, double dt) noexcep
   return out;
 }
 
-const TwoSpeedParameters::Side& TwoSpeedSequencer::side() const noexcept {
-  return direction_ > 0.0 ? params_.positive : params_.negative;
-}
-
-bool TwoSpeedSequencer::creep_off_reached(double p) const noexcept {
-  return remaining(p) <= side().braking_distance ||
-         (stopping_ && (stop_end_ - p) * direction_ <= 0.0);
-}
-
-Velocity TwoSpeedSequencer::wanted_velocity() const noexcept {
-  if (override_ < kOverrideStationary) return Velocity::kOff;
-  if (velocity_ > kRapidVelocityThreshold && override_ > kOverrideRapidAbove) {
-    return Velocity::kHigh;
-  }
-  return Velocity::kLow;
-}
-
 void TwoSpeedSequencer::enter(Phase phase) noexcept {
   phase_ = phase;
   elapsed_ = 0.0;
   fresh_ = false;
-  main_velocity_ = Velocity::kOff;
-  switching_ = false;
-  switch_elapsed_ = 0.0;
-}
-
-void TwoSpeedSequencer::drive_main_travel() noexcept {
-  const Velocity wanted = wanted_velocity();
-  if (wanted != Velocity::kLow) {
-    main_velocity_ = wanted;
-    switching_ = false;
-    return;
-  }
-  // Rapid → creep always passes through the rapid-to-creep delay, also by override.
-  if (main_velocity_ == Velocity::kHigh) {
-    main_velocity_ = Velocity::kOff;
-    switching_ = true;
-    switch_elapsed_ = 0.0;
-  }
-  if (switching_) {
-    if (!reached(switch_elapsed_, params_.rapid_to_creep_delay)) return;
-    switching_ = false;
-  }
-  main_velocity_ = Velocity::kLow;
+  main_speed_.reset();
 }
 
 TwoSpeedCycle TwoSpeedSequencer::advance(double p) noexcept {
@@ -216,44 +215,40 @@ TwoSpeedCycle TwoSpeedSequencer::advance(double p) noexcept {
       case Phase::kRest:
         return out;
       case Phase::kBrakeRelease:
-        if (!reached(elapsed_, params_.brake_release_delay)) return out;
+        if (!reached(elapsed_, leg_.params().brake_release_delay)) return out;
         enter(Phase::kMainTravel);
         break;
       case Phase::kMainTravel: {
-        if (creep_off_reached(p)) {
+        if (leg_.creep_off_reached(p)) {
           enter(Phase::kBrakeIncidence);
           break;
         }
-        if (remaining(p) <= side().creep_distance) {
+        if (leg_.remaining(p) <= leg_.side().creep_distance) {
           // Only a rapid that was on needs the rapid-to-creep delay before the creep.
-          const bool rapid = main_velocity_ == Velocity::kHigh || switching_;
-          enter(rapid ? Phase::kHighToLowDelay : Phase::kCreep);
+          enter(main_speed_.rapid() ? Phase::kHighToLowDelay : Phase::kCreep);
           break;
         }
-        drive_main_travel();
+        main_speed_.drive(leg_.wanted_velocity(), leg_.params().rapid_to_creep_delay);
         return out;
       }
       case Phase::kHighToLowDelay:
-        if (creep_off_reached(p)) {
+        if (leg_.creep_off_reached(p)) {
           enter(Phase::kBrakeIncidence);
           break;
         }
-        if (!reached(elapsed_, params_.rapid_to_creep_delay)) return out;
+        if (!reached(elapsed_, leg_.params().rapid_to_creep_delay)) return out;
         enter(Phase::kCreep);
         break;
       case Phase::kCreep:
-        if (!creep_off_reached(p)) return out;
+        if (!leg_.creep_off_reached(p)) return out;
         enter(Phase::kBrakeIncidence);
         break;
       case Phase::kBrakeIncidence:
-        if (!reached(elapsed_, side().brake_incidence_delay)) return out;
-        if (return_leg_ && !stopping_) {
+        if (!reached(elapsed_, leg_.side().brake_incidence_delay)) return out;
+        if (leg_.turn()) {
           // Looping: the reversal point is reached; the return leg approaches the target from
           // the required side without braking in between.
-          return_leg_ = false;
-          direction_ = -direction_;
-          leg_end_ = target_;
-          if (!(remaining(p) > side().braking_distance)) {
+          if (!(leg_.remaining(p) > leg_.side().braking_distance)) {
             abort();
             out.event = TwoSpeedEvent::kError;
             out.error = ErrorCode::kTwoSpeedDistanceTooShort;
@@ -262,7 +257,7 @@ TwoSpeedCycle TwoSpeedSequencer::advance(double p) noexcept {
           enter(Phase::kMainTravel);
           break;
         }
-        out.event = stopping_ ? TwoSpeedEvent::kStopped : TwoSpeedEvent::kDone;
+        out.event = leg_.stopping() ? TwoSpeedEvent::kStopped : TwoSpeedEvent::kDone;
         abort();  // brake on, at rest
         return out;
     }
@@ -272,10 +267,10 @@ TwoSpeedCycle TwoSpeedSequencer::advance(double p) noexcept {
 
 void TwoSpeedSequencer::write_image() noexcept {
   plc::TwoSpeedDriveCommand command;
-  command.direction =
-      direction_ > 0.0 ? plc::TwoSpeedDirection::kPositive : plc::TwoSpeedDirection::kNegative;
+  command.direction = leg_.direction() > 0.0 ? plc::TwoSpeedDirection::kPositive
+                                             : plc::TwoSpeedDirection::kNegative;
   command.brake = phase_ == Phase::kRest;
-  if (phase_ == Phase::kMainTravel) command.velocity = main_velocity_;
+  if (phase_ == Phase::kMainTravel) command.velocity = main_speed_.velocity();
   if (phase_ == Phase::kCreep) command.velocity = Velocity::kLow;
   plc::write_control_bytes(image_, command);
 }

@@ -18,28 +18,11 @@
 #include <cstdint>
 
 #include "nc_core/axis_config.hpp"
-#include "plc_interface/axis_ref.hpp"
 #include "plc_interface/error_code.hpp"
 #include "plc_interface/two_speed.hpp"
+#include "two_speed/two_speed_leg.hpp"
 
 namespace nc::detail {
-
-// The sequencer's view of AxisConfig: one side per direction of travel.
-struct TwoSpeedParameters {
-  struct Side {
-    double creep_distance = 0.0;
-    double braking_distance = 0.0;
-    double brake_incidence_delay = 0.0;
-  };
-  Side positive;
-  Side negative;
-  double rapid_to_creep_delay = 0.0;
-  double creep_distance_stop = 0.0;
-  double brake_release_delay = 0.0;
-  double looping_distance = 0.0;  // 0 when looping is off
-
-  static TwoSpeedParameters from(const AxisConfig& config) noexcept;
-};
 
 // What ended in this cycle.
 enum class TwoSpeedEvent : uint8_t {
@@ -57,12 +40,6 @@ struct TwoSpeedCycle {
 
 class TwoSpeedSequencer {
  public:
-  // Start velocity above this is rapid, (0, this] creep (seed 004 "Velocity and override").
-  static constexpr double kRapidVelocityThreshold = 50.0;
-  // Override above this is rapid; below kOverrideStationary (0.01 %) the axis stands.
-  static constexpr uint32_t kOverrideRapidAbove = plc::kOverrideFull / 2;
-  static constexpr uint32_t kOverrideStationary = plc::kOverrideFull / 10'000;
-
   // Set-up: checks the two-speed rules (validate_two_speed); starts disabled, brake on, state 0.
   explicit TwoSpeedSequencer(const AxisConfig& config);
 
@@ -82,7 +59,7 @@ class TwoSpeedSequencer {
   plc::ErrorCode stop(double actual_position) noexcept;
   // PlcToNc.Override, 0 … 1'000'000; acts only in the main travel phase. Above 100 %: 0x4238,
   // the last valid value stays.
-  plc::ErrorCode set_override(uint32_t value) noexcept;
+  plc::ErrorCode set_override(uint32_t value) noexcept { return leg_.set_override(value); }
 
   // One NC cycle: `actual_position` is the encoder's value at its start, dt the cycle time (> 0).
   TwoSpeedCycle step(double actual_position, double dt) noexcept;
@@ -90,8 +67,8 @@ class TwoSpeedSequencer {
   const plc::NCTOIO_DRIVE_TWO_SPEED& image() const noexcept { return image_; }
   plc::TwoSpeedAxisState state() const noexcept;
   bool busy() const noexcept { return phase_ != Phase::kRest; }  // positioning or stop running
-  bool stopping() const noexcept { return busy() && stopping_; }
-  double target() const noexcept { return target_; }  // of the last accepted start
+  bool stopping() const noexcept { return busy() && leg_.stopping(); }
+  double target() const noexcept { return leg_.target(); }  // of the last accepted start
 
  private:
   enum class Phase : uint8_t {
@@ -102,20 +79,14 @@ class TwoSpeedSequencer {
     kCreep,
     kBrakeIncidence
   };
-  using Velocity = plc::TwoSpeedVelocity;
 
-  const TwoSpeedParameters::Side& side() const noexcept;
-  double remaining(double p) const noexcept { return (leg_end_ - p) * direction_; }
-  bool creep_off_reached(double p) const noexcept;
-  Velocity wanted_velocity() const noexcept;
   void enter(Phase phase) noexcept;
-  // Main travel: take the wanted speed (rapid → creep through the rapid-to-creep delay).
-  void drive_main_travel() noexcept;
   // Moves through as many phases as this cycle completes; returns what ended.
   TwoSpeedCycle advance(double p) noexcept;
   void write_image() noexcept;
 
-  TwoSpeedParameters params_;
+  TwoSpeedLeg leg_;
+  MainTravelSpeed main_speed_{};
   plc::NCTOIO_DRIVE_TWO_SPEED image_{};
 
   Phase phase_ = Phase::kRest;
@@ -123,20 +94,6 @@ class TwoSpeedSequencer {
   bool started_ = false;  // a start since the enable: nAxisState 20 at rest rather than 0
   bool fresh_ = false;    // phase entered by start()/stop(): the next step() is its first cycle
   double elapsed_ = 0.0;  // s in the present phase, counted at each step() after its first
-
-  double target_ = 0.0;
-  double leg_end_ = 0.0;     // target, or the reversal point of a looping first leg
-  double direction_ = 1.0;   // +1 / -1 on this leg
-  bool return_leg_ = false;  // a looping return leg follows this leg
-  double velocity_ = 0.0;
-  uint32_t override_ = plc::kOverrideFull;
-
-  Velocity main_velocity_ = Velocity::kOff;  // speed commanded in the main travel phase
-  bool switching_ = false;                   // main travel: rapid off, waiting to creep
-  double switch_elapsed_ = 0.0;
-
-  bool stopping_ = false;
-  double stop_end_ = 0.0;  // stop: creep off when the actual position passes it
   TwoSpeedEvent pending_ = TwoSpeedEvent::kNone;  // a stop at rest, shown by the next step()
 };
 
