@@ -14,6 +14,7 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 
 #include "plc_interface/error_code.hpp"
 
@@ -48,19 +49,40 @@ struct Segment {
   double j = 0.0;
 };
 
-// A fixed-capacity sequence of constant-jerk segments starting at t = 0. Copies move only the
-// segments in use (a velocity change has at most a handful of the capacity).
+namespace detail {
+
+// The segments of a Profile (internal): a fixed capacity that is not cleared on construction
+// (planning would pay for clearing all of it; only [0, count) is ever written before it is read),
+// copied by the segments in use only (a velocity change has at most a handful of the capacity).
+class SegmentTable {
+ public:
+  static constexpr std::size_t kCapacity = 24;
+
+  SegmentTable() noexcept {}
+  SegmentTable(const SegmentTable& other) noexcept;
+  SegmentTable& operator=(const SegmentTable& other) noexcept;
+  ~SegmentTable() = default;
+
+  // The segment holding t (0 < t < the end, count > 0): the last one with t0 <= t (the first when
+  // none is), searched from `cursor` forwards or backwards and left there.
+  std::size_t find(double t, std::size_t& cursor) const noexcept;
+
+  union {
+    Segment items[kCapacity];
+  };
+  std::size_t count = 0;
+};
+
+}  // namespace detail
+
+// A fixed-capacity sequence of constant-jerk segments starting at t = 0, as the planners return it.
+// Copies move only the segments in use. The planners build it through an internal writer
+// (nc_core/src/profile/profile_writer.hpp); reset/append/close/anchor_to_end are the same builder
+// for code outside the planner that joins profiles.
 class Profile {
  public:
-  static constexpr std::size_t kMaxSegments = 24;
+  static constexpr std::size_t kMaxSegments = detail::SegmentTable::kCapacity;
 
-  Profile() = default;
-  Profile(const Profile& other) noexcept { copy_from(other); }
-  Profile& operator=(const Profile& other) noexcept {
-    if (this != &other) copy_from(other);
-    return *this;
-  }
-  ~Profile() = default;
   static Profile failure(ErrorCode code) noexcept;
 
   bool ok() const noexcept { return error_ == ErrorCode::kNone; }
@@ -84,15 +106,17 @@ class Profile {
   // (continuous motion holds its velocity), so at(t) extrapolates p = p_end + v_end (t - T).
   bool holds_velocity() const noexcept { return holds_velocity_; }
 
-  std::size_t segment_count() const noexcept { return count_; }
+  std::size_t segment_count() const noexcept { return segments_.count; }
   const Segment& segment(std::size_t i) const noexcept { return segments_.items[i]; }
 
-  // Builder used by the planners: start at a state, append constant-jerk pieces, then close.
+  // Builder: start at a state, append constant-jerk pieces, then close.
   void reset(const KinematicState& start) noexcept;
-  bool append(double duration, double jerk) noexcept;  // false when full; zero lengths skipped
-  // The same, with the end acceleration / velocity the planner knows exactly (a bound, 0, V) set
-  // instead of the integrated value, so rounding does not drift along long holds; NaN = integrate.
-  bool append(double duration, double jerk, double exact_a, double exact_v) noexcept;
+  // Appends a piece (false when full; zero lengths skipped). exact_a / exact_v, unless NaN, are
+  // the end acceleration / velocity the caller knows exactly (a bound, 0, V), set instead of the
+  // integrated value so that rounding does not drift along long holds.
+  bool append(double duration, double jerk,
+              double exact_a = std::numeric_limits<double>::quiet_NaN(),
+              double exact_v = std::numeric_limits<double>::quiet_NaN()) noexcept;
   // Ends the profile; when `exact_end` is given, the final state is set to it (removing the
   // rounding of the integration) — the planners pass the exact target state.
   void close(const KinematicState* exact_end = nullptr, bool holds_velocity = false) noexcept;
@@ -100,27 +124,15 @@ class Profile {
   // state, so that the end of a profile is exact relative to its target even after a long
   // excursion (rounding then stays relative to the values near each end). Call after close().
   void anchor_to_end(std::size_t first) noexcept;
-  // The running end state while building (integrated from the last segment).
-  KinematicState end_state() const noexcept { return end_; }
 
  private:
   friend class detail::ProfileWriter;
-  void copy_from(const Profile& other) noexcept;
-  // The segment holding t (0 <= t < duration()): the last one with t0 <= t.
-  std::size_t find_segment(double t) const noexcept;
 
-  // Storage that is not cleared on construction (planning would pay for clearing the whole
-  // fixed capacity): only [0, count_) is ever written before it is read.
-  union Storage {
-    Storage() noexcept {}
-    Segment items[kMaxSegments];
-  };
-  Storage segments_;
-  std::size_t count_ = 0;
+  detail::SegmentTable segments_;
   double duration_ = 0.0;
   KinematicState start_{};
   KinematicState final_{};
-  KinematicState end_{};
+  KinematicState end_{};  // the running end state while building (integrated from the last piece)
   ErrorCode error_ = ErrorCode::kNone;
   bool holds_velocity_ = false;
   mutable std::size_t cursor_ = 0;  // the segment of the last at() / jerk_at()

@@ -39,7 +39,7 @@ inline Profile finish(const KinematicState& start, double target, double v_end, 
   writer.close(&end, holds);
   profile.anchor_to_end(tail_start);
   // One returned object (no copy of the profile on return).
-  if (!profile_finite(profile)) profile = Profile::failure(ErrorCode::kPlannerNoSolution);
+  if (!profile_finite(profile)) ProfileWriter::fail(profile, ErrorCode::kPlannerNoSolution);
   return profile;
 }
 

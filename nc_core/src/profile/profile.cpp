@@ -17,28 +17,40 @@ Profile Profile::failure(ErrorCode code) noexcept {
   return profile;
 }
 
-void Profile::copy_from(const Profile& other) noexcept {
-  // Only [0, count_) is ever read; the rest of the storage stays as it is.
-  if (other.count_ > 0) {
-    std::memcpy(static_cast<void*>(segments_.items), other.segments_.items,
-                other.count_ * sizeof(Segment));
-  }
-  count_ = other.count_;
-  duration_ = other.duration_;
-  start_ = other.start_;
-  final_ = other.final_;
-  end_ = other.end_;
-  error_ = other.error_;
-  holds_velocity_ = other.holds_velocity_;
-  cursor_ = other.cursor_;
+namespace detail {
+
+SegmentTable::SegmentTable(const SegmentTable& other) noexcept : count(other.count) {
+  // Only [0, count) is ever read; the rest of the storage stays as it is.
+  if (count > 0) std::memcpy(static_cast<void*>(items), other.items, count * sizeof(Segment));
 }
+
+SegmentTable& SegmentTable::operator=(const SegmentTable& other) noexcept {
+  if (this != &other) {
+    count = other.count;
+    if (count > 0) std::memcpy(static_cast<void*>(items), other.items, count * sizeof(Segment));
+  }
+  return *this;
+}
+
+std::size_t SegmentTable::find(double t, std::size_t& cursor) const noexcept {
+  // The last segment with t0 <= t (the first when none is): from the previous call's segment
+  // forwards or backwards, which finds the same one as a scan from either end.
+  std::size_t i = cursor < count ? cursor : count - 1;
+  if (items[i].t0 <= t) {
+    while (i + 1 < count && items[i + 1].t0 <= t)
+      ++i;
+  } else {
+    while (i > 0 && items[i].t0 > t)
+      --i;
+  }
+  cursor = i;
+  return i;
+}
+
+}  // namespace detail
 
 void Profile::reset(const KinematicState& start) noexcept {
   detail::ProfileWriter(*this, start).close(nullptr, false);
-}
-
-bool Profile::append(double duration, double jerk) noexcept {
-  return append(duration, jerk, NAN, NAN);
 }
 
 bool Profile::append(double duration, double jerk, double exact_a, double exact_v) noexcept {
@@ -64,7 +76,7 @@ void Profile::anchor_to_end(std::size_t first) noexcept {
   // A- = 3.6e-9 of 9500 s moved the switch by 1.08e-9 mm).
   double next_p = final_.p;
   double next_v = final_.v;
-  for (std::size_t i = count_; i > first; --i) {
+  for (std::size_t i = segments_.count; i > first; --i) {
     Segment& seg = segments_.items[i - 1];
     const double t = seg.duration;
     if (seg.v != 0.0) seg.v = next_v - t * (seg.a + 0.5 * seg.j * t);
@@ -72,21 +84,6 @@ void Profile::anchor_to_end(std::size_t first) noexcept {
     next_v = seg.v;
     next_p = seg.p;
   }
-}
-
-std::size_t Profile::find_segment(double t) const noexcept {
-  // The last segment with t0 <= t (the first when none is): from the previous call's segment
-  // forwards or backwards, which finds the same one as a scan from either end.
-  std::size_t i = cursor_ < count_ ? cursor_ : count_ - 1;
-  if (segments_.items[i].t0 <= t) {
-    while (i + 1 < count_ && segments_.items[i + 1].t0 <= t)
-      ++i;
-  } else {
-    while (i > 0 && segments_.items[i].t0 > t)
-      --i;
-  }
-  cursor_ = i;
-  return i;
 }
 
 KinematicState Profile::at(double t) const noexcept {
@@ -104,7 +101,7 @@ KinematicState Profile::at(double t, double& jerk) const noexcept {
     jerk = jerk_at(t);  // t <= 0 or NaN: its own rules
     return start_;
   }
-  const std::size_t i = find_segment(t);
+  const std::size_t i = segments_.find(t, cursor_);
   const Segment& seg = segments_.items[i];
   jerk = seg.j;
   const double tau = t - seg.t0;
@@ -116,17 +113,17 @@ KinematicState Profile::at(double t, double& jerk) const noexcept {
   // approaches an exactly known end (v = 0 at a reversal, the target) without the drift of the
   // segment's length.
   const KinematicState end =
-      i + 1 < count_ ? KinematicState{segments_.items[i + 1].p, segments_.items[i + 1].v,
-                                      segments_.items[i + 1].a}
-                     : final_;
-  const double t_end = i + 1 < count_ ? segments_.items[i + 1].t0 : duration_;
+      i + 1 < segments_.count ? KinematicState{segments_.items[i + 1].p, segments_.items[i + 1].v,
+                                               segments_.items[i + 1].a}
+                              : final_;
+  const double t_end = i + 1 < segments_.count ? segments_.items[i + 1].t0 : duration_;
   return detail::advance(end, seg.j, std::min(t - t_end, 0.0));
 }
 
 double Profile::jerk_at(double t) const noexcept {
-  if (count_ == 0 || t < 0.0 || t >= duration_) return 0.0;
-  if (std::isnan(t)) return segments_.items[count_ - 1].j;  // as a scan from the end finds
-  return segments_.items[find_segment(t)].j;
+  if (segments_.count == 0 || t < 0.0 || t >= duration_) return 0.0;
+  if (std::isnan(t)) return segments_.items[segments_.count - 1].j;  // as a scan from the end finds
+  return segments_.items[segments_.find(t, cursor_)].j;
 }
 
 }  // namespace nc

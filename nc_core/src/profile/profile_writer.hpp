@@ -23,7 +23,7 @@ class ProfileWriter {
   // Continues a profile that Profile::append is building.
   explicit ProfileWriter(Profile& profile) noexcept
       : profile_(profile),
-        count_(profile.count_),
+        count_(profile.segments_.count),
         duration_(profile.duration_),
         end_(profile.end_) {}
 
@@ -44,12 +44,25 @@ class ProfileWriter {
     return append(piece.t, dir * piece.j, dir * piece.a_end, dir * piece.v_end);
   }
 
+  // Makes `profile` what Profile::failure(code) returns, in place (no assignment of a whole
+  // Profile on the planners' return path).
+  static void fail(Profile& profile, ErrorCode code) noexcept {
+    profile.segments_.count = 0;
+    profile.duration_ = 0.0;
+    profile.start_ = KinematicState{};
+    profile.final_ = KinematicState{};
+    profile.end_ = KinematicState{};
+    profile.error_ = code;
+    profile.holds_velocity_ = false;
+    profile.cursor_ = 0;
+  }
+
   std::size_t count() const noexcept { return count_; }
   const KinematicState& end_state() const noexcept { return end_; }
 
   // Stores the running state into the profile (all Profile::append needs between calls).
   void store() const noexcept {
-    profile_.count_ = count_;
+    profile_.segments_.count = count_;
     profile_.duration_ = duration_;
     profile_.end_ = end_;
   }

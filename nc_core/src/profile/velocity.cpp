@@ -15,12 +15,13 @@ Profile build_change(const KinematicState& start, double v1, const detail::Bound
   Profile profile;
   detail::ProfileWriter writer(profile, start);
   if (detail::velocity_change(start.v, start.a, v1, bounds, writer) < 0) {
-    profile = Profile::failure(ErrorCode::kPlannerNoSolution);
+    detail::ProfileWriter::fail(profile, ErrorCode::kPlannerNoSolution);
     return profile;
   }
   const KinematicState end{writer.end_state().p, v1, 0.0};
   writer.close(&end, holds);
-  if (!detail::profile_finite(profile)) profile = Profile::failure(ErrorCode::kPlannerNoSolution);
+  if (!detail::profile_finite(profile))
+    detail::ProfileWriter::fail(profile, ErrorCode::kPlannerNoSolution);
   return profile;
 }
 
