@@ -169,3 +169,34 @@ TEST_CASE("A target losing its controller enable at rest: list off without an er
   REQUIRE(rig.move_to(0, 300.0));
   CHECK(rig.set_pos(1) == Approx(0.0).margin(1e-9));  // no longer coupled: it stays
 }
+
+TEST_CASE(
+    "A target with a move of its own losing its controller enable: no brake of a drive "
+    "that is off, no jump when the enable returns",
+    "[hli][kernel]") {
+  // Fuzz finding K22: the lost enable raised 0x4260 for the target's own move in phase (a), so
+  // phase (c) took the error path and braked the drive (84 m/s in the fuzz program) while the
+  // drive was off; with the enable back and MC_Reset while that brake still ran, the image showed
+  // the brake's velocity and position.
+  Rig rig({axis(1, "X"), axis(8, "Y2")});
+  REQUIRE(rig.run_example_2(100.0, 200.0, 400));  // DIRECT + self, both axes move
+  REQUIRE(rig.axes[1]->NcToPlc.SetVelo > 1000.0);
+  rig.power[1].Enable = false;
+  rig.tick();
+  CHECK(rig.error(1) == 0x4260);  // its own move fails (section "Axis state and enables")
+  CHECK_FALSE(state_of(rig, 1).active_r);
+  rig.tick();
+  rig.power[1].Enable = true;  // back at once: a brake from > 1000 mm/s would still run
+  rig.ticks(2);
+  REQUIRE(rig.reset_axis(1));
+  double fastest = 0.0;
+  for (int n = 0; n < 50; ++n) {
+    rig.tick();
+    fastest = std::max(fastest, std::abs(rig.axes[1]->NcToPlc.SetVelo));
+  }
+  CHECK(rig.error(1) == 0);
+  CHECK(fastest == 0.0);  // the drive was off: nothing to brake, the axis holds
+  REQUIRE(rig.finish_move(0));
+  rig.ticks(2000);
+  CHECK(rig.set_pos(1) == Approx(rig.axes[1]->NcToPlc.ActPos).margin(1e-3));
+}

@@ -173,7 +173,7 @@ void HliStage::stop(std::size_t axis) noexcept {
 }
 
 void HliStage::release(std::size_t axis) noexcept {
-  if (axis < size() && targets_[axis].state == State::kCoupled)
+  if (axis < size() && targets_[axis].state != State::kFree)
     ListEvaluation(*this).take(axis, Candidate{});
 }
 

@@ -57,8 +57,8 @@ class HliStage : private HliState {
   // deceleration, then follows its own program motion from where it stands.
   void stop(std::size_t axis) noexcept;
   // Cycle: the target's drive is off (no controller enable): its list goes off without braking,
-  // as a list switched off by the PLC (d stays, then follows the axis's own program). No-op for
-  // an axis without a list in force.
+  // as a list switched off by the PLC (d stays, then follows the axis's own program); a brake
+  // still running ends there too (a drive that is off has no ramp). No-op for a free axis.
   void release(std::size_t axis) noexcept;
 
   // The program coordinate #CHANNEL INIT [CMDPOS] would give the axis now (D5): the drive

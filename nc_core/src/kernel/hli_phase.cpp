@@ -77,18 +77,22 @@ void HliPhase::run(std::span<const std::unique_ptr<ServoAxis>> axes,
     // A target in axis error (raised in phases (a), (b) of this cycle or (e) of the last one,
     // also one MC_Reset has cleared since) loses its list: its drive brakes from where it is
     // instead of following its sources. Without its drive (controller enable off) the list goes
-    // off too, without a ramp to brake on; losing the enable while the drive moves is an axis
-    // error, as during a job. (A target was coupled at the last phase (c): errors_seen_ is
-    // that phase's count.)
+    // off too, without a ramp to brake on — also when the lost enable already raised an error
+    // (0x4260 of a job of its own) — and a brake still running ends: otherwise the stage would
+    // brake a drive that is off and hand its far position over when the enable returns (fuzz
+    // finding K22). Losing the enable while the drive moves is an axis error, as during a job.
+    // (A target was coupled at the last phase (c): errors_seen_ is that phase's count.)
     const uint32_t raised = axes[i]->core().errors_raised_;
     const bool new_error = raised != errors_seen_[i];
     errors_seen_[i] = raised;
-    if (!stage_.coupled(i)) continue;
-    if (axes[i]->core().channel_.has_error() || new_error) {
-      stage_.stop(i);
-    } else if (!axes[i]->core().channel_.controller_enabled()) {
-      if (dv_[i] != 0.0) pending_[i] = plc::ErrorCode::kControllerEnableMissing;
+    if (!stage_.coupled(i) && !stage_.braking(i)) continue;
+    if (!axes[i]->core().channel_.controller_enabled()) {
+      if (stage_.coupled(i) && dv_[i] != 0.0) {
+        pending_[i] = plc::ErrorCode::kControllerEnableMissing;
+      }
       stage_.release(i);
+    } else if (stage_.coupled(i) && (axes[i]->core().channel_.has_error() || new_error)) {
+      stage_.stop(i);
     }
   }
   const hli::Inputs in{q_, qv_, qa_, std::span<const bool>(referenced_.get(), n), refusal_};
