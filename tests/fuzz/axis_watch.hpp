@@ -104,6 +104,7 @@ class AxisWatch {
     if (!usable(vk) || !usable(ak_plus) || !usable(ak_minus) || !usable(vp)) return;
     velocity_ += vk;
     acceleration_ += std::max(ak_plus, ak_minus) + vk / vp * acceleration_;
+    compensated_ = true;
     // On a slave (SPEC C5) the same on top of factor × its master's set values.
     comp_velocity_ += vk;
     comp_acceleration_ += std::max(ak_plus, ak_minus);
@@ -214,7 +215,7 @@ class AxisWatch {
       if (const char* broken = check_following(n)) return broken;
     } else if (!decoupled_) {
       // hli_velocity_ / hli_acceleration_ are 0 unless the axis was an HLI target since it rested.
-      if (std::fabs(n.SetVelo) > std::max(velocity_, hli_velocity_) * (1.0 + 1e-9) + 1e-9) {
+      if (std::fabs(n.SetVelo) > std::max(stop_velocity(), hli_velocity_) * (1.0 + 1e-9) + 1e-9) {
         return "set velocity above limit";
       }
       if (std::fabs(n.SetAcc) > std::max(acceleration_, hli_acceleration_) * (1.0 + 1e-6) + 1e-6) {
@@ -231,7 +232,7 @@ class AxisWatch {
 
   long commands_posted() const noexcept { return posted_total_; }
   long commands_answered() const noexcept { return answered_total_; }
-  double velocity_limit() const noexcept { return velocity_; }
+  double velocity_limit() const noexcept { return stop_velocity(); }
   double acceleration_limit() const noexcept { return acceleration_; }
 
  private:
@@ -317,6 +318,14 @@ class AxisWatch {
   // slave (see check()).
   bool left_coupling(const plc::NCTOPLC_AXIS_REF&) const noexcept { return left_; }
   static bool usable(double x) noexcept { return std::isfinite(x) && x > 0.0; }
+  // The velocity bound of an axis that is not coupled. A compensation's AK± is a step of the set
+  // acceleration, not a ramp; an error ramp (or stop) that starts from the compensated set state
+  // brings that acceleration back at the stop's jerk and passes |v| + a² / (2 J) on the way
+  // (docs/behaviour.md "Position compensation"; finding K23 was this rule without it).
+  double stop_velocity() const noexcept {
+    if (!compensated_) return velocity_;
+    return velocity_ + acceleration_ * acceleration_ / (2.0 * stop_jerk_);
+  }
   void widen_acceleration(double x) noexcept {
     if (usable(x)) acceleration_ = std::max(acceleration_, x);
   }
@@ -326,6 +335,7 @@ class AxisWatch {
     comp_velocity_ = 0.0;
     comp_acceleration_ = 0.0;
     comp_share_ = 0.0;
+    compensated_ = false;
     decoupled_ = false;
     hli_velocity_ = 0.0;
     hli_acceleration_ = 0.0;
@@ -392,6 +402,7 @@ class AxisWatch {
   // check_cyclic).
   double comp_velocity_ = 0.0;
   double comp_acceleration_ = 0.0;
+  bool compensated_ = false;  // a compensation was allowed since the axis last rested
   double comp_share_ = 0.0;
   bool was_coupled_ = false;
   bool decoupled_ = false;  // decoupled in motion (C4): own limits unchecked until at rest
