@@ -4,8 +4,9 @@
 //  - |SetVelo| stays within the axis's max velocity and |SetAcc| within its largest acceleration
 //    limit (A+, A-, emergency deceleration), each widened only by what the PLC itself asked for
 //    and docs/behaviour.md documents as allowed: accelerations / decelerations given to a
-//    move, MC_Halt or MC_Stop; a compensation's VK and AK± on top of the basic motion (B7); the
-//    fed external set values (B8). The widening lasts until the axis rests again. A coupled
+//    move, MC_Halt or MC_Stop; a compensation's VK and AK± on top of the basic motion, and the
+//    a² / 2J an error ramp from its acceleration passes (B7, K23); the fed external set values
+//    (B8). The widening lasts until the axis rests again. A coupled
 //    slave instead has GearRatio times its master's set velocity and acceleration (C1, C2), plus
 //    what its own compensation may add (C5, the VK and AK± the program gave it); a
 //    slave decoupled in motion goes on as it would have as a slave (C4, factor x its former
