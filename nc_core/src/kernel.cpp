@@ -62,25 +62,54 @@ plc::AXIS_REF& Kernel::add_axis(const AxisConfig& config) {
   return axes_.back()->ref();
 }
 
+namespace {
+
+// A coupling command (MC_GearIn, MC_GearInDyn, MC_GearOut) waits in some axis's mailbox: its
+// phase (a) reads another axis and may change the coupling graph. Only these commands reach
+// another axis; none of them can be buffered (command_buffer.hpp).
+bool coupling_command_posted(std::span<const std::unique_ptr<detail::ServoAxis>> axes) noexcept {
+  for (const auto& axis : axes) {
+    const plc::CommandMailbox& mailbox = axis->ref().Mailbox;
+    if (mailbox.pending() != 0 &&
+        (mailbox.holds(plc::CommandType::kGearIn) || mailbox.holds(plc::CommandType::kGearInDyn) ||
+         mailbox.holds(plc::CommandType::kGearOut))) {
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
 void Kernel::cycle() noexcept {
   const uint64_t counter = cycles_ + 1;
   const std::size_t n = axes_.size();
-  // (a) commands of every axis first: a coupling command (MC_GearIn / MC_GearOut) reads other
-  // axes and changes the graph, so the order and the blocks below are those after it.
   detail::CouplingPort port{axes_, couplings_};
-  for (std::size_t i = 0; i < n; ++i)
-    axes_[i]->phase_commands(port);
-  // With couplings the phases run over the whole kernel, phase by phase (a slave reads its
-  // master's set values, a group reaction needs all its members' errors); so they do while the
-  // HLI stage is engaged (phase (c) needs every axis's program position). Without either no
-  // axis reads another, so each axis runs phases (b) to (f) before the next one: its data
-  // stays in the cache and the kernel loops once.
+  // Whether phase (c) runs: the PLC's HLI semaphores alone decide it, not phase (a).
   const bool hli = hli_->begin_cycle();
-  if (couplings_.has_couplings() || hli) {
-    run_phases(0, n, counter);
-  } else {
-    for (std::size_t i = 0; i < n; ++i)
+  if (!hli && !couplings_.has_couplings() && !coupling_command_posted(axes_)) {
+    // No axis reads another in this cycle, and none will start to: each axis runs all its
+    // phases (a) to (f) before the next one, so its data stays in the cache and the kernel
+    // loops once (docs/architecture.md "One tick").
+    for (std::size_t i = 0; i < n; ++i) {
+      axes_[i]->phase_commands(port);
       axes_[i]->run_alone(snapshots_[i], snapshots_, counter);
+    }
+  } else {
+    // (a) commands of every axis first: a coupling command reads other axes and changes the
+    // graph, so the order and the blocks below are those after it.
+    for (std::size_t i = 0; i < n; ++i)
+      axes_[i]->phase_commands(port);
+    // With couplings the phases run over the whole kernel, phase by phase (a slave reads its
+    // master's set values, a group reaction needs all its members' errors); so they do while
+    // the HLI stage is engaged (phase (c) needs every axis's program position). Without either
+    // (the coupling command was refused) each axis runs phases (b) to (f) alone.
+    if (couplings_.has_couplings() || hli) {
+      run_phases(0, n, counter);
+    } else {
+      for (std::size_t i = 0; i < n; ++i)
+        axes_[i]->run_alone(snapshots_[i], snapshots_, counter);
+    }
   }
   mark_ready_groups();
   cycles_ = counter;

@@ -137,13 +137,21 @@ class CommandMailbox {
   void set_answer(uint16_t number, CommandState state, uint32_t error_code = 0) noexcept;
 
   std::size_t pending() const noexcept { return count_; }
+  // NC side. Whether a posted command not yet taken is of `type`.
+  bool holds(CommandType type) const noexcept {
+    for (std::size_t k = 0; k < count_; ++k) {
+      if (queue_[(head_ + k) % kQueueCapacity].type == type) return true;
+    }
+    return false;
+  }
 
  private:
-  std::array<Command, kQueueCapacity> queue_{};
-  std::array<CommandAnswer, kAnswerSlots> answers_{};
+  // The queue's bookkeeping first: the NC reads `count_` every cycle, the slots only on a post.
   std::size_t head_ = 0;
   std::size_t count_ = 0;
   uint16_t last_number_ = 0;
+  std::array<Command, kQueueCapacity> queue_{};
+  std::array<CommandAnswer, kAnswerSlots> answers_{};
 };
 
 }  // namespace plc
