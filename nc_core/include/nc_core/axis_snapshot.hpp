@@ -12,7 +12,9 @@
 
 namespace nc {
 
-struct AxisSnapshot {
+// Aligned to a cache line (120 bytes padded to 128): the kernel writes one per axis and cycle,
+// each then on two lines of its own.
+struct alignas(64) AxisSnapshot {
   double set_position = 0.0;
   double set_velocity = 0.0;
   double set_acceleration = 0.0;

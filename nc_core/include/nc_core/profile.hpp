@@ -67,10 +67,10 @@ class SegmentTable {
   // none is), searched from `cursor` forwards or backwards and left there.
   std::size_t find(double t, std::size_t& cursor) const noexcept;
 
+  std::size_t count = 0;  // first: with the Profile's header on the line of the first segment
   union {
     Segment items[kCapacity];
   };
-  std::size_t count = 0;
 };
 
 }  // namespace detail
@@ -128,14 +128,16 @@ class Profile {
  private:
   friend class detail::ProfileWriter;
 
-  detail::SegmentTable segments_;
+  // What at() reads first, then the segments: a cycle's sample touches the header's line and the
+  // segment's, not the end of the table.
   double duration_ = 0.0;
+  mutable std::size_t cursor_ = 0;  // the segment of the last at() / jerk_at()
+  ErrorCode error_ = ErrorCode::kNone;
+  bool holds_velocity_ = false;
+  detail::SegmentTable segments_;
   KinematicState start_{};
   KinematicState final_{};
   KinematicState end_{};  // the running end state while building (integrated from the last piece)
-  ErrorCode error_ = ErrorCode::kNone;
-  bool holds_velocity_ = false;
-  mutable std::size_t cursor_ = 0;  // the segment of the last at() / jerk_at()
 };
 
 // From any state to rest at `target` in the least time. Start states outside the limits are

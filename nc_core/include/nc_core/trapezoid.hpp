@@ -45,9 +45,9 @@ class Trapezoid {
   Trapezoid stopped_at(double t) const noexcept;
 
  private:
+  double peak_ = 0.0;  // signed peak velocity (first: an axis publishes it every cycle)
   double requested_ = 0.0;
   double distance_ = 0.0;
-  double peak_ = 0.0;        // signed peak velocity
   double slope_up_ = 0.0;    // signed acceleration of the first ramp
   double slope_down_ = 0.0;  // signed acceleration of the closing ramp
   double t1_ = 0.0, t2_ = 0.0, t3_ = 0.0;

@@ -91,8 +91,8 @@ struct AxisCore {
   std::unique_ptr<TwoSpeedAxis> two_speed_;
   double cycle_time_;
   std::size_t index_;
-  // The configuration values a steady cycle reads, copied here (config_ below stays cold).
-  bool encoder_ = false;  // config_.kind == AxisKind::kEncoder
+  // The configuration values a steady cycle reads, copied here (config_ below stays cold); and
+  // encoder_ below, with the other flags.
   double modulo_factor_ = 360.0;
   double standstill_window_ = 0.0;
   PositionController controller_{};
@@ -101,13 +101,39 @@ struct AxisCore {
 
   KinematicState set_{};   // set values of this cycle (basic motion + superpositions)
   KinematicState base_{};  // the basic source's own set values
-  // Phase (c): what phase (d) controls to when given this cycle (else set_), and d − q of the
-  // last cycle it was given (0 without HLI coupling): program coordinate = drive − offset.
-  KinematicState drive_command_{};
+  // d − q of the last cycle phase (c) gave a drive command (0 without HLI coupling): program
+  // coordinate = drive − offset; and the drive position phase (d) controlled to last.
   double previous_drive_position_ = 0.0;
   double drive_offset_ = 0.0;
-  bool drive_command_given_ = false;
+  double set_jerk_ = 0.0;
+  double previous_set_position_ = 0.0;
+  double target_ = 0.0;  // end position of the last positioning / stop; window monitors use it
+  double hand_velocity_ = 0.0;  // push_by_hand(), mm/s
+  uint32_t slave_count_ = 0;    // axes coupled to this one as their master
+  // The axis errors raised, counted wrapping (the HLI phase: an error raised and reset between two
+  // phases (c) still shows as a change).
+  uint32_t errors_raised_ = 0;
   plc::CoupleState hli_role_ = plc::CoupleState::kSingle;  // from phase (c), see there
+  bool encoder_ = false;                                   // config_.kind == AxisKind::kEncoder
+  bool drive_command_given_ = false;  // phase (c) gave drive_command_ in this cycle
+  // Referenced (StateDWord bit 1): the software limits are monitored only then.
+  bool homed_ = true;
+  bool locked_ = false;  // MC_Stop: motion commands refused until kStopRelease
+  bool has_been_stopped_ = false;
+  bool error_event_ = false;  // an error was raised in this cycle
+  bool enable_seen_ = false;  // the controller enable of the last check_enables()
+  bool group_ready_ = false;  // see set_group_ready()
+  bool by_hand_ = false;      // case 2 in force (follows_by_hand() latched)
+  // C7 / C8 (error_propagation.cpp), the coupling link and the homing: a steady cycle reads only
+  // the flag each keeps first, so they follow the members above in the order of their size.
+  PropagationDelay propagation_{};
+  ActualValueFilter actual_filter_{};
+  SlaveLink slave_link_{};
+  HomingJob homing_{};  // its phase first: a steady cycle reads only that
+  // Phase (c): what phase (d) controls to when given this cycle (else set_).
+  KinematicState drive_command_{};
+  BasicPath slave_path_{};  // while coupled: the master's path of this cycle, transformed
+
   bool hli_target() const noexcept {
     return hli_role_ == plc::CoupleState::kSlave || hli_role_ == plc::CoupleState::kMasterAndSlave;
   }
@@ -117,44 +143,22 @@ struct AxisCore {
   const KinematicState& drive_command() const noexcept {
     return drive_command_given_ ? drive_command_ : set_;
   }
-  SlaveLink slave_link_{};
-  uint32_t slave_count_ = 0;  // axes coupled to this one as their master
-  BasicPath slave_path_{};    // while coupled: the master's path of this cycle, transformed
   // The axis's own job's path, or slave_path_ while coupled.
   BasicPath basic_path() const noexcept;
   double target_velocity() const noexcept {  // basic_path().target_velocity, without the rest
     if (slave_link_.coupled) return slave_path_.target_velocity;
     return job_.active() ? job_.goal.target_velocity() : 0.0;
   }
-  double set_jerk_ = 0.0;
-  double previous_set_position_ = 0.0;
-  double previous_measured_ = 0.0;
-  double target_ = 0.0;  // end position of the last positioning / stop; window monitors use it
-
-  // Referenced (StateDWord bit 1): the software limits are monitored only then.
-  bool homed_ = true;
   void set_homed(bool homed) noexcept {
     homed_ = homed;
     monitors_.set_referenced(homed);
   }
-  bool locked_ = false;  // MC_Stop: motion commands refused until kStopRelease
-  bool has_been_stopped_ = false;
-  bool error_event_ = false;  // an error was raised in this cycle
-  bool enable_seen_ = false;  // the controller enable of the last check_enables()
-  // C7 / C8 (error_propagation.cpp).
-  PropagationDelay propagation_{};
-  bool group_ready_ = false;    // see set_group_ready()
-  bool by_hand_ = false;        // case 2 in force (follows_by_hand() latched)
-  double hand_velocity_ = 0.0;  // push_by_hand(), mm/s
-  ActualValueFilter actual_filter_{};
-  // The axis errors raised, counted wrapping (the HLI phase: an error raised and reset between two
-  // phases (c) still shows as a change).
-  uint32_t errors_raised_ = 0;
 
-  SuperpositionStack stack_{};
+  // Each at the start of a cache line: the stack's first 128 bytes and the channel's first 256
+  // (its AXIS_REF's PlcToNc, NcToPlc and the mailbox's count) are what a steady cycle reads.
+  alignas(64) SuperpositionStack stack_{};
+  alignas(64) AxisChannel channel_{};
   MasterJob job_{};
-  AxisChannel channel_{};
-  HomingJob homing_{};
   CommandBuffer buffer_{};
   Profile& scratch_;  // a start is planned here first, so a refusal changes nothing
   AxisConfig config_;

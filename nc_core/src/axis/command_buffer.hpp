@@ -17,8 +17,8 @@
 namespace nc::detail {
 
 struct CommandBuffer {
+  bool waiting = false;  // first: the axis's steady cycle reads only this
   plc::Command command{};
-  bool waiting = false;
 
   // The waiting command, if any, is answered `state` on `channel` (an aborting command, a stop,
   // an error) and leaves the buffer.

@@ -71,21 +71,22 @@ class Compensation {
   bool incomplete() const noexcept;
 
  private:
-  Trapezoid trapezoid_{};
-  KinematicState state_{};
-  double requested_ = 0.0;  // D as commanded (travel-relative)
+  // What every cycle reads (running(), and for NcToPlc done(), length(), velocity_diff()) first.
+  bool running_ = false;
+  bool stop_requested_ = false;
+  bool time_over_ = false;
+  uint16_t number_ = 0;
   double direction_ = 1.0;
   double length_ = 0.0;
+  KinematicState state_{};
+  Trapezoid trapezoid_{};   // its peak velocity first
+  double requested_ = 0.0;  // D as commanded (travel-relative)
   double process_velocity_ = 1.0;
   double lost_ = 0.0;  // trapezoid distance not done because s < 1 (travel-relative)
   double previous_scale_ = 1.0;
   double previous_p_ = 0.0;  // trapezoid position at the previous sample
   uint64_t k_ = 0;           // cycles since the start; the trapezoid is sampled at k·T
   double cycle_time_ = 0.0;
-  uint16_t number_ = 0;
-  bool running_ = false;
-  bool stop_requested_ = false;
-  bool time_over_ = false;
 };
 
 }  // namespace nc::detail

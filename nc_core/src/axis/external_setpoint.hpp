@@ -64,14 +64,15 @@ class ExternalSetpoint {
   const KinematicState& state() const noexcept { return state_; }
 
  private:
-  KinematicState state_{};
-  Type type_ = Type::kNone;
-  double target_ = 0.0;
-  double delay_ = 0.0;
-  double max_velocity_ = 0.0;
+  // What every cycle reads (enabled(), taking(), moving()) first.
   bool enabled_ = false;
   bool final_cycle_ = false;
   bool was_moving_ = false;  // the previous cycle's direction was ±1
+  Type type_ = Type::kNone;
+  KinematicState state_{};
+  double target_ = 0.0;
+  double delay_ = 0.0;
+  double max_velocity_ = 0.0;
 };
 
 }  // namespace nc::detail

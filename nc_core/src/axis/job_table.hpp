@@ -130,8 +130,8 @@ class JobTable {
   bool reached_ = false;
   double jerk_ = 0.0;
   KinematicState state_{};
+  Profile profile_{};        // a cycle reads its header (first) and one segment, not all of it
   DecouplingChain chain_{};  // empty except after an online decoupling, until the next install
-  Profile profile_{};        // last: a cycle reads its header and one segment, not all of it
 };
 
 }  // namespace nc::detail

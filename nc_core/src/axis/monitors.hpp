@@ -46,24 +46,26 @@ class Monitors {
   void set_referenced(bool referenced) noexcept { referenced_ = referenced; }
 
  private:
+  // The flags together: an axis's hot members are packed (docs/performance.md "Kernel cycle").
   bool fe_enabled_ = true;
+  bool tw_enabled_ = true;
+  bool in_target_ = false;
+  bool pr_enabled_ = true;
+  bool in_area_ = false;
+  bool referenced_ = true;
+  bool min_enabled_ = false;
+  bool max_enabled_ = false;
+
   double fe_limit_ = 5.0;
   uint64_t fe_filter_cycles_ = 0;
   uint64_t fe_count_ = 0;
 
-  bool tw_enabled_ = true;
   double tw_window_ = 2.0;
   uint64_t tw_cycles_ = 1;
   uint64_t tw_count_ = 0;
-  bool in_target_ = false;
 
-  bool pr_enabled_ = true;
   double pr_window_ = 5.0;
-  bool in_area_ = false;
 
-  bool referenced_ = true;
-  bool min_enabled_ = false;
-  bool max_enabled_ = false;
   double min_ = 0.0;
   double max_ = 0.0;
 };

@@ -73,8 +73,10 @@ class SuperpositionStack {
  public:
   // The two superpositions, parts of their own: their commands start and stop them in place;
   // superimpose(), fold() and end_external() keep them and the held offset consistent.
-  Compensation compensation{};
+  // (External first: with the held offset, its flags and the compensation's first members a
+  // steady cycle reads lie on two cache lines.)
   ExternalSetpoint external{};
+  Compensation compensation{};
 };
 
 }  // namespace nc::detail

@@ -67,8 +67,8 @@ class HomingJob {
   // The next cycles continue from `from` at `velocity` (signed) or stop (`stop`).
   bool plan(const KinematicState& from, double velocity, bool stop, Profile& scratch) noexcept;
 
+  Phase phase_ = Phase::kIdle;  // first: the axis's steady cycle reads only this (active())
   MasterJob motion_{};
-  Phase phase_ = Phase::kIdle;
   uint16_t number_ = 0;
   double home_ = 0.0;
   double cam_direction_ = 1.0;
