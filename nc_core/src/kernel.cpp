@@ -64,6 +64,9 @@ plc::AXIS_REF& Kernel::add_axis(const AxisConfig& config) {
 
 namespace {
 
+// How many axes ahead the steady loop asks for an axis's data (docs/performance.md).
+constexpr std::size_t kPrefetchAhead = 2;
+
 // A coupling command (MC_GearIn, MC_GearInDyn, MC_GearOut) waits in some axis's mailbox: its
 // phase (a) reads another axis and may change the coupling graph. Only these commands reach
 // another axis; none of them can be buffered (command_buffer.hpp).
@@ -92,6 +95,10 @@ void Kernel::cycle() noexcept {
     // phases (a) to (f) before the next one, so its data stays in the cache and the kernel
     // loops once (docs/architecture.md "One tick").
     for (std::size_t i = 0; i < n; ++i) {
+      // The data of the axis after the next one is on its way while this one runs.
+      if (i + kPrefetchAhead < n) {
+        detail::prefetch_cycle_data(*axes_[i + kPrefetchAhead], snapshots_[i + kPrefetchAhead]);
+      }
       axes_[i]->phase_commands(port);
       axes_[i]->run_alone(snapshots_[i], snapshots_, counter);
     }
