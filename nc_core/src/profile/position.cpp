@@ -100,13 +100,26 @@ Profile plan_position(const KinematicState& start, double target, const Limits& 
     const double jerk = push[i].j;
     // S(tau) - goal with its derivatives: p' = v, v' = a, a' = jerk along the push.
     const double jerk6 = jerk / 6.0;
+    double frame = 0.0;  // the stop's mirror sign at the last evaluation
     auto fd = [&](double tau) {
       const double a_t = s.a + jerk * tau;
       const double v_t = s.v + tau * (s.a + (0.5 * jerk) * tau);
       const double p_t = s.p + tau * (s.v + tau * (0.5 * s.a + tau * jerk6));
       const detail::StopAlong d = detail::stop_point_along(v_t, a_t, jerk, stop_bounds);
-      return detail::RootPoint{p_t + d.distance - goal, d.d, d.dd,
-                               kRootTolerance * (std::abs(p_t) + std::abs(d.distance) + goal)};
+      frame = d.frame;
+      return detail::RootPoint{p_t + d.distance - goal,
+                               d.d,
+                               d.dd,
+                               kRootTolerance * (std::abs(p_t) + std::abs(d.distance) + goal),
+                               d.d3,
+                               d.d4,
+                               d.quartic};
+    };
+    // Whether the stop at tau keeps the shape of the last quartic point (same mirror sign).
+    auto same = [&](double tau) {
+      const double a_t = s.a + jerk * tau;
+      const double v_t = s.v + tau * (s.a + (0.5 * jerk) * tau);
+      return detail::stop_has_hold_shape(v_t, a_t, frame, stop_bounds);
     };
     // A start acceleration against the push beyond A- (a < -A-, the motion still forwards:
     // v_nat > 0) is brought back by the stop at +J, as the push's first ramp does: along that
@@ -136,7 +149,7 @@ Profile plan_position(const KinematicState& start, double target, const Limits& 
         1.0);
     const double q0 = std::sqrt(r0);
     const double x0 = lo + (push[i].t - lo) * (jerk == 0.0 ? q0 : std::sqrt(q0));
-    const double tau = detail::find_root_quadratic(fd, lo, push[i].t, x0, f_lo);
+    const double tau = detail::find_root_quadratic(fd, same, lo, push[i].t, x0, f_lo);
     const KinematicState x = detail::advance(s, jerk, tau);
     push[i] = Piece{tau, jerk, x.a, NAN};
     n_stop = detail::velocity_change(x.v, x.a, 0.0, bounds, stop);
