@@ -156,11 +156,12 @@ Profile plan_position(const KinematicState& start, double target, const Limits& 
     if (n_stop < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
     return finish(start, target, dir, push, i + 1, 0.0, stop, n_stop);
   }
-  // The push reaches V: cruise for the rest, then stop from (V, 0).
+  // The push reaches V: cruise for the rest, then stop from (V, 0). Where that stop ends without
+  // the cruise is the scan's last stop point (the stop from the push's end, (V, 0) exactly, or
+  // from the start when it is at V within rounding): it is not integrated again from the pieces.
   n_stop = detail::velocity_change(limits.velocity, 0.0, 0.0, bounds, stop);
   if (n_stop < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
-  const double s_end = s.p + detail::pieces_distance(limits.velocity, 0.0, stop, n_stop);
-  const double cruise = (goal - s_end) / limits.velocity;
+  const double cruise = (goal - scan.s_here) / limits.velocity;
   const int n_head = detail::settle_push(push, n_push, s.a, limits.jerk);
   return finish(start, target, dir, push, n_head, cruise, stop, n_stop);
 }
