@@ -149,7 +149,48 @@ Profile plan_position(const KinematicState& start, double target, const Limits& 
         1.0);
     const double q0 = std::sqrt(r0);
     const double x0 = lo + (push[i].t - lo) * (jerk == 0.0 ? q0 : std::sqrt(q0));
-    const double tau = detail::find_root_quadratic(fd, same, lo, push[i].t, x0, f_lo);
+    // Where the stop is a rise and the final ramp, the search runs on its closed form
+    // (stop_point_rise) with the root finder's steps; at the first point of another shape, or a
+    // step out of the bracket, the general search takes over from there.
+    double hi = push[i].t;
+    double t_at = x0;
+    double tau = NAN;
+    double last_step = 0.0;
+    for (int k = 0; k < 8; ++k) {
+      const double a_t = s.a + jerk * t_at;
+      const double v_t = s.v + t_at * (s.a + (0.5 * jerk) * t_at);
+      const double p_t = s.p + t_at * (s.v + t_at * (0.5 * s.a + t_at * jerk6));
+      detail::StopAlong d{};
+      if (!detail::stop_point_rise(v_t, a_t, jerk, stop_bounds, d)) break;
+      const double f = p_t + d.distance - goal;
+      const double tol = kRootTolerance * (std::abs(p_t) + std::abs(d.distance) + goal);
+      if (std::abs(f) <= tol) {
+        tau = t_at;
+        break;
+      }
+      if (f < 0.0) {
+        lo = t_at;
+        f_lo = f;
+      } else {
+        hi = t_at;
+      }
+      if (!(d.d > 0.0)) break;
+      const double disc = d.d * d.d - 2.0 * f * d.dd;
+      const double step = disc >= 0.0 ? -2.0 * f / (d.d + std::sqrt(disc)) : -f / d.d;
+      const double next = t_at + step;
+      if (!(next > lo && next < hi)) break;
+      if (last_step != 0.0) {
+        // root.hpp's acceptance: the model's error shrinks with the cube of the step.
+        const double r = std::abs(step / last_step);
+        if (std::abs(f) * r * r * r <= 0.125 * tol) {
+          tau = next;
+          break;
+        }
+      }
+      last_step = step;
+      t_at = next;
+    }
+    if (std::isnan(tau)) tau = detail::find_root_quadratic(fd, same, lo, hi, t_at, f_lo);
     const KinematicState x = detail::advance(s, jerk, tau);
     push[i] = Piece{tau, jerk, x.a, NAN};
     n_stop = detail::velocity_change(x.v, x.a, 0.0, bounds, stop);

@@ -234,6 +234,37 @@ inline StopAlong stop_point_along(double v0, double a0, double g, const StopBoun
   return {d.x, v0 + d.d, a0 + d.dd};
 }
 
+// The stop point along a push where the stop is a rise to a_meet = m <= A- and the final ramp (the
+// first shape above), in closed form: D = s (m^2 (a - m) - a^3 / 6) / J^2 (mirrored a), S' and S''
+// as stop_point_along's. For plan_position's switch search on that shape (issue 17): about a third
+// of stop_point_along's instructions, without its branches or piece integration; D differs from the
+// integrated pieces by rounding only. Returns false (out untouched) where the stop has another
+// shape (the same decisions as stop_point_along's).
+inline bool stop_point_rise(double v0, double a0, double g, const StopBounds& b,
+                            StopAlong& out) noexcept {
+  const double jerk = b.jerk;
+  const double s = natural_velocity(v0, a0, jerk) > 0.0 ? -1.0 : 1.0;
+  const double v = s * v0;
+  const double a = s * a0;
+  if (a > b.am_limit) return false;
+  const double meet2 = 0.5 * (a * a - (2.0 * jerk) * v);
+  if (!(meet2 > kStopRel * (a * a + 2.0 * jerk * std::abs(v)))) return false;
+  const double m = std::sqrt(meet2);
+  if (!(m <= b.am && m > a)) return false;
+  const double ij = b.inv_jerk;
+  const double ij2 = ij * ij;
+  const double gs = s * g;
+  const double lag = -s * (jerk - gs);
+  const double am_ratio = 0.75 * a / m;
+  const double d_a = (m - a) * (m - 0.5 * a) * ij2;
+  const double d_va = (am_ratio - 1.0) * ij;
+  const double d_aa = (2.0 * a - 1.5 * m - am_ratio * a) * ij2;
+  out.distance = s * ((meet2 * (a - m) - (1.0 / 6.0) * (a * a * a)) * ij2);
+  out.d = lag * d_a;
+  out.dd = lag * (d_va * a + d_aa * gs);
+  return true;
+}
+
 // Whether the shortest stop from (v0, a0) has the shape on which stop_point_along marks S as
 // `quartic`, in the stop's frame `s`: a rise to A- (t > 0), then a hold (v1 below the final
 // ramp's start). That implies stop_point_along's other decisions for it (a below A-, meet2 > A-^2
