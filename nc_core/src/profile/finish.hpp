@@ -32,9 +32,9 @@ inline Profile finish(const KinematicState& start, double target, double v_end, 
   for (int i = 0; i < n_head; ++i)
     writer.append(head[i], dir);
   const std::size_t tail_start = writer.count();
-  writer.append(cruise, 0.0, NAN, NAN);
+  writer.append_anchored(cruise, 0.0, NAN, NAN);
   for (int i = 0; i < n_tail; ++i)
-    writer.append(tail[i], dir);
+    writer.append_anchored(tail[i], dir);
   const KinematicState end{target, v_end, 0.0};
   writer.close(&end, holds);
   profile.anchor_to_end(tail_start);
