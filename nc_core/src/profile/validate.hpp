@@ -103,6 +103,14 @@ inline double ramp_end_bound(const KinematicState& s, const Limits& l) noexcept 
 // ramp ends (ramp_end_bound): the profile's a there keeps a few ulp of |a0|, which must stay
 // within the planner's 1e-9 of that bound (P8, P9).
 inline ErrorCode check_start_against(const KinematicState& s, const Limits& l) noexcept {
+  // The common case (issue 17): |a| within min(A+, A-), |v| within V, a^2 within J V (the forced
+  // velocity within 1.5 V) and V^2 within kMaxStopDistance A- / 4 pass every test below, with a
+  // margin far above their rounding; the tests are only made for the other starts.
+  if (std::abs(s.a) <= std::min(l.acceleration, l.deceleration) && std::abs(s.v) <= l.velocity &&
+      s.a * s.a <= l.jerk * l.velocity &&
+      l.velocity * l.velocity <= (0.25 * kMaxStopDistance) * l.deceleration) {
+    return ErrorCode::kNone;
+  }
   const double forced = std::abs(s.v + s.a * std::abs(s.a) / (2.0 * l.jerk));
   const double speed = std::max(std::abs(s.v), forced);
   if (!(std::abs(s.a) <= kMaxStartRatio * ramp_end_bound(s, l)) ||
