@@ -3,7 +3,8 @@
 // the planner's range:
 //   - stop_point_rise (a rise to a_meet <= A- and the final ramp): accepted exactly where
 //     stop_point_along takes that shape, D within 1e-12 of the stop's own scale of the integrated
-//     pieces' value, S' and S'' as stop_point_along's (the same expressions);
+//     pieces' value, S' and S'' as stop_point_along's (the same expressions); the push scan's
+//     stop_distance_closed is that D there and stop_distance_of's value elsewhere;
 //   - the quartic (a rise to A-, a hold, the final ramp): where stop_point_along marks a point
 //     `quartic`, S along the push is S(0) + S' h + S'' h^2 / 2 + S''' h^3 / 6 + S'''' h^4 / 24 at
 //     every h where stop_has_hold_shape holds, to 1e-10 of the terms it is made of; at points where
@@ -40,7 +41,7 @@ Draw draw(profile_problems::Rng& rng) {
 TEST_CASE("stop_point_rise: the rise-and-ramp stop point in closed form, where that is the shape",
           "[profile][stop_point]") {
   profile_problems::Rng rng(0xC105EDull);
-  long rises = 0, shape_differs = 0, distance_differs = 0, slope_differs = 0;
+  long rises = 0, shape_differs = 0, distance_differs = 0, slope_differs = 0, plain_differs = 0;
   for (int k = 0; k < 300'000; ++k) {
     const Draw d = draw(rng);
     const nc::detail::StopBounds b(
@@ -58,11 +59,15 @@ TEST_CASE("stop_point_rise: the rise-and-ramp stop point in closed form, where t
         meet2 > nc::detail::kStopRel * (am * am + 2.0 * d.limits.jerk * std::abs(vm)) &&
         std::sqrt(meet2) <= d.limits.deceleration && (std::sqrt(meet2) - am) / d.limits.jerk > 0.0;
     if (on_rise != expected) ++shape_differs;
+    const double closed = nc::detail::stop_distance_closed(d.v, d.a, b);
+    const double integrated = nc::detail::stop_distance_of(d.v, d.a, b);
+    if (!expected && closed != integrated) ++plain_differs;
     if (!on_rise || !expected) continue;
     ++rises;
     const double m = std::sqrt(meet2);
     const double scale = std::pow(std::abs(am) + m, 3) / (d.limits.jerk * d.limits.jerk);
     if (!(std::abs(rise.distance - along.distance) <= 1e-12 * scale)) ++distance_differs;
+    if (closed != rise.distance) ++plain_differs;
     const double tol_d = 1e-14 * (std::abs(along.d) + std::abs(along.dd));
     if (!(std::abs(rise.d - along.d) <= tol_d &&
           std::abs(rise.dd - along.dd) <= 1e-14 * std::abs(along.dd) + tol_d)) {
@@ -73,6 +78,7 @@ TEST_CASE("stop_point_rise: the rise-and-ramp stop point in closed form, where t
   CHECK(shape_differs == 0);
   CHECK(distance_differs == 0);
   CHECK(slope_differs == 0);
+  CHECK(plain_differs == 0);
 }
 
 TEST_CASE("stop_point_along: on the rise-hold-ramp stop S is the quartic of its four derivatives",

@@ -265,6 +265,26 @@ inline bool stop_point_rise(double v0, double a0, double g, const StopBounds& b,
   return true;
 }
 
+// stop_distance_of for plan_position's push scan (the stop points at the push's piece ends): the
+// rise-and-ramp shape in closed form (stop_point_rise's D), the other shapes by stop_distance_of.
+// The closed form is within rounding of the integrated pieces; these points only bracket the switch
+// and start its search (and give the cruise's length, where the stop from (V, 0) is the shape).
+inline double stop_distance_closed(double v0, double a0, const StopBounds& b) noexcept {
+  const double s = natural_velocity(v0, a0, b.jerk) > 0.0 ? -1.0 : 1.0;
+  const double v = s * v0;
+  const double a = s * a0;
+  if (!(a > b.am_limit)) {
+    const double meet2 = 0.5 * (a * a - (2.0 * b.jerk) * v);
+    if (meet2 > kStopRel * (a * a + 2.0 * b.jerk * std::abs(v))) {
+      const double m = std::sqrt(meet2);
+      if (m <= b.am && m > a) {
+        return s * ((meet2 * (a - m) - (1.0 / 6.0) * (a * a * a)) * (b.inv_jerk * b.inv_jerk));
+      }
+    }
+  }
+  return stop_distance_of(v0, a0, b);
+}
+
 // Whether the shortest stop from (v0, a0) has the shape on which stop_point_along marks S as
 // `quartic`, in the stop's frame `s`: a rise to A- (t > 0), then a hold (v1 below the final
 // ramp's start). That implies stop_point_along's other decisions for it (a below A-, meet2 > A-^2
