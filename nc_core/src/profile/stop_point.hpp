@@ -3,9 +3,11 @@
 // (velocity_change.cpp, stop_change), written once for plain numbers and once for jets (value,
 // first and second derivative), so that the root can be found with a second-order (Halley-type)
 // method; stop_point_along (below) writes the derivatives out for the common stop shapes and
-// takes the jets for the others. The values are computed by the same operations everywhere (bit
-// for bit); only the derivatives use reciprocals, since they steer the root finder and never
-// enter a profile.
+// takes the jets for the others. stop_distance_of and stop_point_along compute the values by the
+// same operations as the pieces (bit for bit); only the derivatives use reciprocals, since they
+// steer the root finder and never enter a profile. The closed forms at the end (stop_point_rise,
+// stop_distance_closed; the quartic of the rise-hold-ramp shape) are within rounding of those
+// values, for the switch search and the push scan (issue 17).
 #pragma once
 
 #include <cmath>
