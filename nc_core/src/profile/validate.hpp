@@ -3,8 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstddef>
-#include <cstring>
 
 #include "nc_core/profile.hpp"
 #include "profile/velocity_change.hpp"
@@ -161,27 +159,6 @@ inline ErrorCode check_plan(const KinematicState& s, double target, const Limits
     if (e != ErrorCode::kNone) return e;
   }
   return check_start_against(s, l);
-}
-
-// The last line of defence against overflow with extreme (finite) inputs: a profile whose
-// numbers are not all finite is never handed out. x * 0 is 0 for a finite x and NaN otherwise,
-// so one sum replaces a test per value.
-inline bool profile_finite(const Profile& profile) noexcept {
-  const KinematicState f = profile.final_state();
-  // Two lanes at a time (issue 17): a segment's duration, p, v and a lie next to each other.
-  using Pair = double __attribute__((vector_size(16)));
-  static_assert(offsetof(Segment, p) == offsetof(Segment, duration) + sizeof(double) &&
-                offsetof(Segment, a) == offsetof(Segment, v) + sizeof(double));
-  Pair zero = {profile.duration() * 0.0 + f.p * 0.0, f.v * 0.0 + f.a * 0.0};
-  for (std::size_t i = 0; i < profile.segment_count(); ++i) {
-    const Segment& s = profile.segment(i);
-    Pair first;
-    Pair second;
-    std::memcpy(&first, &s.duration, sizeof first);  // duration, p
-    std::memcpy(&second, &s.v, sizeof second);       // v, a
-    zero += first * 0.0 + second * 0.0;
-  }
-  return zero[0] + zero[1] == 0.0;
 }
 
 }  // namespace nc::detail
