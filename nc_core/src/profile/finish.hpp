@@ -31,15 +31,26 @@ inline Profile finish(const KinematicState& start, double target, double v_end, 
   ProfileWriter writer(profile, start);
   for (int i = 0; i < n_head; ++i)
     writer.append(head[i], dir);
+  // The head is integrated forward: each segment's p takes the previous one's t, p, v, a and j,
+  // so a value that is not finite anywhere in the head leaves the head's end p not finite.
+  const double head_end_p = writer.end_state().p;
   const std::size_t tail_start = writer.count();
-  writer.append(cruise, 0.0, NAN, NAN);
+  writer.append_anchored(cruise, 0.0, NAN, NAN);
   for (int i = 0; i < n_tail; ++i)
-    writer.append(tail[i], dir);
+    writer.append_anchored(tail[i], dir);
   const KinematicState end{target, v_end, 0.0};
   writer.close(&end, holds);
   profile.anchor_to_end(tail_start);
+  // The tail is integrated backward from the exact end the same way, down to the first segment
+  // the anchor placed. The last line of defence against overflow with extreme (finite) inputs, a
+  // profile whose numbers are not all finite is never handed out: the head's end, that p and the
+  // total duration stand for a test of every segment's values (issue 17: it was a loop over them).
+  const std::size_t first = tail_start > 0 ? tail_start : 1;
+  const double tail_start_p = first < profile.segment_count() ? profile.segment(first).p : 0.0;
   // One returned object (no copy of the profile on return).
-  if (!profile_finite(profile)) ProfileWriter::fail(profile, ErrorCode::kPlannerNoSolution);
+  if (!std::isfinite(head_end_p + tail_start_p + profile.duration())) {
+    ProfileWriter::fail(profile, ErrorCode::kPlannerNoSolution);
+  }
   return profile;
 }
 

@@ -100,13 +100,26 @@ Profile plan_position(const KinematicState& start, double target, const Limits& 
     const double jerk = push[i].j;
     // S(tau) - goal with its derivatives: p' = v, v' = a, a' = jerk along the push.
     const double jerk6 = jerk / 6.0;
+    double frame = 0.0;  // the stop's mirror sign at the last evaluation
     auto fd = [&](double tau) {
       const double a_t = s.a + jerk * tau;
       const double v_t = s.v + tau * (s.a + (0.5 * jerk) * tau);
       const double p_t = s.p + tau * (s.v + tau * (0.5 * s.a + tau * jerk6));
       const detail::StopAlong d = detail::stop_point_along(v_t, a_t, jerk, stop_bounds);
-      return detail::RootPoint{p_t + d.distance - goal, d.d, d.dd,
-                               kRootTolerance * (std::abs(p_t) + std::abs(d.distance) + goal)};
+      frame = d.frame;
+      return detail::RootPoint{p_t + d.distance - goal,
+                               d.d,
+                               d.dd,
+                               kRootTolerance * (std::abs(p_t) + std::abs(d.distance) + goal),
+                               d.d3,
+                               d.d4,
+                               d.quartic};
+    };
+    // Whether the stop at tau keeps the shape of the last quartic point (same mirror sign).
+    auto same = [&](double tau) {
+      const double a_t = s.a + jerk * tau;
+      const double v_t = s.v + tau * (s.a + (0.5 * jerk) * tau);
+      return detail::stop_has_hold_shape(v_t, a_t, frame, stop_bounds);
     };
     // A start acceleration against the push beyond A- (a < -A-, the motion still forwards:
     // v_nat > 0) is brought back by the stop at +J, as the push's first ramp does: along that
@@ -136,18 +149,60 @@ Profile plan_position(const KinematicState& start, double target, const Limits& 
         1.0);
     const double q0 = std::sqrt(r0);
     const double x0 = lo + (push[i].t - lo) * (jerk == 0.0 ? q0 : std::sqrt(q0));
-    const double tau = detail::find_root_quadratic(fd, lo, push[i].t, x0, f_lo);
+    // Where the stop is a rise and the final ramp, the search runs on its closed form
+    // (stop_point_rise) with the root finder's steps; at the first point of another shape, or a
+    // step out of the bracket, the general search takes over from there.
+    double hi = push[i].t;
+    double t_at = x0;
+    double tau = NAN;
+    double last_step = 0.0;
+    for (int k = 0; k < 8; ++k) {
+      const double a_t = s.a + jerk * t_at;
+      const double v_t = s.v + t_at * (s.a + (0.5 * jerk) * t_at);
+      const double p_t = s.p + t_at * (s.v + t_at * (0.5 * s.a + t_at * jerk6));
+      detail::StopAlong d{};
+      if (!detail::stop_point_rise(v_t, a_t, jerk, stop_bounds, d)) break;
+      const double f = p_t + d.distance - goal;
+      const double tol = kRootTolerance * (std::abs(p_t) + std::abs(d.distance) + goal);
+      if (std::abs(f) <= tol) {
+        tau = t_at;
+        break;
+      }
+      if (f < 0.0) {
+        lo = t_at;
+        f_lo = f;
+      } else {
+        hi = t_at;
+      }
+      if (!(d.d > 0.0)) break;
+      const double disc = d.d * d.d - 2.0 * f * d.dd;
+      const double step = disc >= 0.0 ? -2.0 * f / (d.d + std::sqrt(disc)) : -f / d.d;
+      const double next = t_at + step;
+      if (!(next > lo && next < hi)) break;
+      if (last_step != 0.0) {
+        // root.hpp's acceptance: the model's error shrinks with the cube of the step.
+        const double r = std::abs(step / last_step);
+        if (std::abs(f) * r * r * r <= 0.125 * tol) {
+          tau = next;
+          break;
+        }
+      }
+      last_step = step;
+      t_at = next;
+    }
+    if (std::isnan(tau)) tau = detail::find_root_quadratic(fd, same, lo, hi, t_at, f_lo);
     const KinematicState x = detail::advance(s, jerk, tau);
     push[i] = Piece{tau, jerk, x.a, NAN};
     n_stop = detail::velocity_change(x.v, x.a, 0.0, bounds, stop);
     if (n_stop < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
     return finish(start, target, dir, push, i + 1, 0.0, stop, n_stop);
   }
-  // The push reaches V: cruise for the rest, then stop from (V, 0).
+  // The push reaches V: cruise for the rest, then stop from (V, 0). Where that stop ends without
+  // the cruise is the scan's last stop point (the stop from the push's end, (V, 0) exactly, or
+  // from the start when it is at V within rounding): it is not integrated again from the pieces.
   n_stop = detail::velocity_change(limits.velocity, 0.0, 0.0, bounds, stop);
   if (n_stop < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
-  const double s_end = s.p + detail::pieces_distance(limits.velocity, 0.0, stop, n_stop);
-  const double cruise = (goal - s_end) / limits.velocity;
+  const double cruise = (goal - scan.s_here) / limits.velocity;
   const int n_head = detail::settle_push(push, n_push, s.a, limits.jerk);
   return finish(start, target, dir, push, n_head, cruise, stop, n_stop);
 }

@@ -44,6 +44,26 @@ class ProfileWriter {
     return append(piece.t, dir * piece.j, dir * piece.a_end, dir * piece.v_end);
   }
 
+  // A segment that Profile::anchor_to_end will place (it is at or after the anchored part's first
+  // segment): the anchor recomputes its p, and its v unless that is an exact 0, back from the exact
+  // end, so only a and the time are integrated here (issue 17: the tail was integrated twice). The
+  // segments after it start at p = NaN and at the piece's exact v (NaN where it gives none), which
+  // the anchor replaces; the running end state is the exact end given to close().
+  bool append_anchored(double duration, double jerk, double exact_a, double exact_v) noexcept {
+    if (!(duration > 0.0)) return true;
+    if (count_ == Profile::kMaxSegments) return false;
+    profile_.segments_.items[count_++] = Segment{duration_, duration, end_.p, end_.v, end_.a, jerk};
+    end_.p = NAN;
+    end_.v = exact_v;
+    end_.a = std::isnan(exact_a) ? end_.a + jerk * duration : exact_a;
+    duration_ += duration;
+    anchored_ = true;
+    return true;
+  }
+  bool append_anchored(const Piece& piece, double dir) noexcept {
+    return append_anchored(piece.t, dir * piece.j, dir * piece.a_end, dir * piece.v_end);
+  }
+
   // Makes `profile` what Profile::failure(code) returns, in place (no assignment of a whole
   // Profile on the planners' return path).
   static void fail(Profile& profile, ErrorCode code) noexcept {
@@ -66,9 +86,11 @@ class ProfileWriter {
     profile_.duration_ = duration_;
     profile_.end_ = end_;
   }
-  // Profile::close: the final state is `exact_end` if given, else the integrated end.
+  // Profile::close: the final state is `exact_end` if given, else the integrated end (after
+  // append_anchored, the running end state too).
   void close(const KinematicState* exact_end, bool holds_velocity) const noexcept {
     store();
+    if (anchored_ && exact_end != nullptr) profile_.end_ = *exact_end;
     profile_.final_ = exact_end != nullptr ? *exact_end : end_;
     profile_.holds_velocity_ = holds_velocity;
   }
@@ -78,6 +100,7 @@ class ProfileWriter {
   std::size_t count_ = 0;
   double duration_ = 0.0;
   KinematicState end_;
+  bool anchored_ = false;  // append_anchored was used
 };
 
 }  // namespace nc::detail

@@ -1,8 +1,9 @@
 // plan_position's scan along the push (internal): the sink the push's velocity change is walked
 // into. It follows the push piece by piece, with the point S where the shortest stop from each
 // piece's end ends, and stops the walk at the first piece whose end reaches the goal (the switch
-// lies in it): the rest of the push towards ±V is not walked (issue 17). The pieces and every S
-// are computed as a whole walk followed by the scan computed them (bit for bit).
+// lies in it): the rest of the push towards ±V is not walked (issue 17). The pieces are those of
+// the whole walk (bit for bit); S is stop_distance_closed's (the rise-and-ramp stop in closed
+// form).
 #pragma once
 
 #include "profile/kinematics.hpp"
@@ -23,7 +24,7 @@ struct PushScan {
   void put(const Piece& piece) noexcept {
     pieces[count++] = piece;
     const KinematicState next = advance(s, piece);
-    const double s_end = next.p + stop_distance_of(next.v, next.a, stop);
+    const double s_end = next.p + stop_distance_closed(next.v, next.a, stop);
     if (s_end >= goal) {
       s_next = s_end;
       found = true;

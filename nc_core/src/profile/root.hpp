@@ -15,12 +15,37 @@ namespace nc::detail {
 // start, with n up to 4 from rest); bisection is the last resort. `f_lo` = f(lo) < 0. Ends when
 // |f| is at its rounding level, the model's step is below two ulp of x, or the bracket is a few
 // ulp wide.
+//
+// Where fd marks a point `quartic`, f is the polynomial of its four derivatives there (exactly, up
+// to rounding) for as long as `same(x)` holds: the search then solves that polynomial by Newton
+// steps from the model's root, and returns the result without evaluating f again if `same` holds
+// there (issue 17: a root on such a stretch took 2-3 evaluations of ~150 instructions each).
 struct RootPoint {
   double f = 0.0;
   double df = 0.0;
   double ddf = 0.0;
   double tol = 0.0;
+  double d3 = 0.0;  // f''' (only where `quartic`)
+  double d4 = 0.0;  // f'''' (only where `quartic`)
+  bool quartic = false;
 };
+
+// A root of P(h) = f(x) + df h + ddf h^2 / 2 + d3 h^3 / 6 + d4 h^4 / 24 by Newton steps from `h`
+// (the quadratic model's root): the first h where |P| is within half f's rounding level, or NaN
+// if the steps do not get there on an increasing stretch.
+inline double quartic_step(const RootPoint& y, double h) noexcept {
+  const double c2 = 0.5 * y.ddf;
+  const double c3 = y.d3 * (1.0 / 6.0);
+  const double c4 = y.d4 * (1.0 / 24.0);
+  for (int k = 0; k < 8; ++k) {
+    const double p = y.f + h * (y.df + h * (c2 + h * (c3 + h * c4)));
+    if (std::abs(p) <= 0.5 * y.tol) return h;
+    const double dp = y.df + h * (2.0 * c2 + h * (3.0 * c3 + h * (4.0 * c4)));
+    if (!(dp > 0.0)) return NAN;
+    h -= p / dp;
+  }
+  return NAN;
+}
 
 // Past this many steps the search only bisects: a model step that keeps overshooting from the
 // near end and a power-law step that keeps landing just past it (a function flat for a while
@@ -30,8 +55,9 @@ struct RootPoint {
 inline constexpr int kModelSteps = 64;
 inline constexpr int kRootSteps = 200;
 
-template <class FD>
-double find_root_quadratic(FD&& fd, double lo, double hi, double x, double f_lo) noexcept {
+template <class FD, class Same>
+double find_root_quadratic(FD&& fd, Same&& same, double lo, double hi, double x,
+                           double f_lo) noexcept {
   const double origin = lo;
   double last_step = 0.0;  // the previous model step (its model predicted f = 0 here)
   double last_f = 0.0;
@@ -51,6 +77,11 @@ double find_root_quadratic(FD&& fd, double lo, double hi, double x, double f_lo)
       step = -y.f / y.df;
     } else {
       step = 0.5 * (lo + hi) - x;
+    }
+    if (y.quartic) {
+      const double h = quartic_step(y, step);
+      const double root = x + h;
+      if (root > lo && root < hi && same(root)) return root;
     }
     double next = x + step;
     const bool slow = last_f != 0.0 && std::abs(y.f) > 0.125 * std::abs(last_f);

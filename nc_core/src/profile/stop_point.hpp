@@ -3,9 +3,11 @@
 // (velocity_change.cpp, stop_change), written once for plain numbers and once for jets (value,
 // first and second derivative), so that the root can be found with a second-order (Halley-type)
 // method; stop_point_along (below) writes the derivatives out for the common stop shapes and
-// takes the jets for the others. The values are computed by the same operations everywhere (bit
-// for bit); only the derivatives use reciprocals, since they steer the root finder and never
-// enter a profile.
+// takes the jets for the others. stop_distance_of and stop_point_along compute the values by the
+// same operations as the pieces (bit for bit); only the derivatives use reciprocals, since they
+// steer the root finder and never enter a profile. The closed forms at the end (stop_point_rise,
+// stop_distance_closed; the quartic of the rise-hold-ramp shape) are within rounding of those
+// values, for the switch search and the push scan (issue 17).
 #pragma once
 
 #include <cmath>
@@ -158,10 +160,21 @@ T stop_distance_of(T v, T a, const StopBounds& b) noexcept {
 //     const, so D_a = t (t/2 - v1 / A-), D_va = -t / A-, D_aa = (v1 - J t^2) / (A- J). Without
 //     the rise (a at A- within rounding) D depends on v alone: S' = s v (A- - a) / A-,
 //     S'' = s (a (A- - a) - v sg) / A-.
+//
+// On the second shape with a rise (t > 0) S is a polynomial of degree 4 in the push's time (p is
+// cubic, t linear, v1 quadratic; D is quadratic in v1 and cubic in t): with t' = -sg / J,
+// v1' = a (J - sg) / J, v1'' = sg (J - sg) / J, S''' = lag (t'^2 - 2 t' v1' / A- - t v1'' / A-)
+// and S'''' = -3 lag t' v1'' / A- (0 on a hold, where S is quadratic). `quartic` marks those
+// points: there the four derivatives give S exactly wherever the stop keeps that shape
+// (stop_has_hold_shape), and the root finder solves that polynomial instead of evaluating S again.
 struct StopAlong {
-  double distance;  // D
-  double d;         // S'
-  double dd;        // S''
+  double distance;     // D
+  double d;            // S'
+  double dd;           // S''
+  double d3 = 0.0;     // S''' (only where `quartic`)
+  double d4 = 0.0;     // S'''' (only where `quartic`)
+  double frame = 0.0;  // the stop's mirror sign s (only where `quartic`)
+  bool quartic = false;
 };
 inline StopAlong stop_point_along(double v0, double a0, double g, const StopBounds& b) noexcept {
   const double jerk = b.jerk;
@@ -209,12 +222,81 @@ inline StopAlong stop_point_along(double v0, double a0, double g, const StopBoun
           const double d_a = t * (0.5 * t - v1 * b.inv_am);
           const double d_va = -t * b.inv_am;
           const double d_aa = (v1 - jerk * t * t) * (b.inv_am * ij);
-          return {x, lag * d_a, lag * (d_va * a + d_aa * gs)};
+          const double t_d = -gs * ij;                                                // t'
+          const double v1_d = a * (jerk - gs) * ij;                                   // v1'
+          const double v1_dd = gs * (jerk - gs) * ij;                                 // v1''
+          const double d_a2 = t_d * t_d - (2.0 * t_d * v1_d + t * v1_dd) * b.inv_am;  // (D_a)''
+          const double d_a3 = -3.0 * t_d * v1_dd * b.inv_am;                          // (D_a)'''
+          return {x, lag * d_a, lag * (d_va * a + d_aa * gs), lag * d_a2, lag * d_a3, s, true};
         }
       }
     }
   }
   const Jet d = stop_distance_of(Jet{v0, a0, g}, Jet{a0, g, 0.0}, b);
   return {d.x, v0 + d.d, a0 + d.dd};
+}
+
+// The stop point along a push where the stop is a rise to a_meet = m <= A- and the final ramp (the
+// first shape above), in closed form: D = s (m^2 (a - m) - a^3 / 6) / J^2 (mirrored a), S' and S''
+// as stop_point_along's. For plan_position's switch search on that shape (issue 17): about a third
+// of stop_point_along's instructions, without its branches or piece integration; D differs from the
+// integrated pieces by rounding only. Returns false (out untouched) where the stop has another
+// shape (the same decisions as stop_point_along's).
+inline bool stop_point_rise(double v0, double a0, double g, const StopBounds& b,
+                            StopAlong& out) noexcept {
+  const double jerk = b.jerk;
+  const double s = natural_velocity(v0, a0, jerk) > 0.0 ? -1.0 : 1.0;
+  const double v = s * v0;
+  const double a = s * a0;
+  if (a > b.am_limit) return false;
+  const double meet2 = 0.5 * (a * a - (2.0 * jerk) * v);
+  if (!(meet2 > kStopRel * (a * a + 2.0 * jerk * std::abs(v)))) return false;
+  const double m = std::sqrt(meet2);
+  if (!(m <= b.am && m > a)) return false;
+  const double ij = b.inv_jerk;
+  const double ij2 = ij * ij;
+  const double gs = s * g;
+  const double lag = -s * (jerk - gs);
+  const double am_ratio = 0.75 * a / m;
+  const double d_a = (m - a) * (m - 0.5 * a) * ij2;
+  const double d_va = (am_ratio - 1.0) * ij;
+  const double d_aa = (2.0 * a - 1.5 * m - am_ratio * a) * ij2;
+  out.distance = s * ((meet2 * (a - m) - (1.0 / 6.0) * (a * a * a)) * ij2);
+  out.d = lag * d_a;
+  out.dd = lag * (d_va * a + d_aa * gs);
+  return true;
+}
+
+// stop_distance_of for plan_position's push scan (the stop points at the push's piece ends): the
+// rise-and-ramp shape in closed form (stop_point_rise's D), the other shapes by stop_distance_of.
+// The closed form is within rounding of the integrated pieces; these points only bracket the switch
+// and start its search (and give the cruise's length, where the stop from (V, 0) is the shape).
+inline double stop_distance_closed(double v0, double a0, const StopBounds& b) noexcept {
+  const double s = natural_velocity(v0, a0, b.jerk) > 0.0 ? -1.0 : 1.0;
+  const double v = s * v0;
+  const double a = s * a0;
+  if (!(a > b.am_limit)) {
+    const double meet2 = 0.5 * (a * a - (2.0 * b.jerk) * v);
+    if (meet2 > kStopRel * (a * a + 2.0 * b.jerk * std::abs(v))) {
+      const double m = std::sqrt(meet2);
+      if (m <= b.am && m > a) {
+        return s * ((meet2 * (a - m) - (1.0 / 6.0) * (a * a * a)) * (b.inv_jerk * b.inv_jerk));
+      }
+    }
+  }
+  return stop_distance_of(v0, a0, b);
+}
+
+// Whether the shortest stop from (v0, a0) has the shape on which stop_point_along marks S as
+// `quartic`, in the stop's frame `s`: a rise to A- (t > 0), then a hold (v1 below the final
+// ramp's start). That implies stop_point_along's other decisions for it (a below A-, meet2 > A-^2
+// far above its tolerance), except within rounding of the boundary to the shape without a hold,
+// where both shapes give the same S.
+inline bool stop_has_hold_shape(double v0, double a0, double s, const StopBounds& b) noexcept {
+  if ((natural_velocity(v0, a0, b.jerk) > 0.0 ? -1.0 : 1.0) != s) return false;
+  const double v = s * v0;
+  const double a = s * a0;
+  const double t = (b.am - a) * b.inv_jerk;
+  return t > 0.0 && v + t * (a + (0.5 * b.jerk) * t) < b.v_curve;
 }
 }  // namespace nc::detail

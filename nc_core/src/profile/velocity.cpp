@@ -20,7 +20,10 @@ Profile build_change(const KinematicState& start, double v1, const detail::Bound
   }
   const KinematicState end{writer.end_state().p, v1, 0.0};
   writer.close(&end, holds);
-  if (!detail::profile_finite(profile))
+  // Integrated forward, each segment's p takes the previous one's t, p, v, a and j: the end's p
+  // and the total duration stand for a test of every segment's values (no profile with a number
+  // that is not finite is handed out; issue 17: it was a loop over them).
+  if (!std::isfinite(end.p + profile.duration()))
     detail::ProfileWriter::fail(profile, ErrorCode::kPlannerNoSolution);
   return profile;
 }
