@@ -84,9 +84,11 @@ struct AxisCore {
     if (stack_.end_external()) base_ = KinematicState{set_.p, 0.0, 0.0};
   }
 
-  // What a steady cycle touches comes first, close together (docs/performance.md "Kernel
-  // cycle"); the job (with its profile), the AXIS_REF (with its mailbox), the homing, the buffer
-  // and the configuration follow.
+  // What a steady cycle touches comes first, close together (docs/performance.md "Kernel cycle",
+  // "Third pass"): the hot members, then the parts of which it reads only the flag they keep
+  // first; the stack and the channel each from a cache line of their own; the job with its
+  // profile's header first; the configuration last. prefetch_cycle_data (servo_axis.hpp) names
+  // these lines: keep the two in step.
   // Kind kTwoSpeed: the phases run this instead of the servo path (AxisKind dispatch).
   std::unique_ptr<TwoSpeedAxis> two_speed_;
   double cycle_time_;
