@@ -329,8 +329,9 @@ struct ArraySink {
 };
 struct WriterSink {
   ProfileWriter& writer;
+  // upward() and stop_change() hand on only pieces with t > 0 and a known a_end.
   void put(const Piece& piece) noexcept {
-    writer.append(piece.t, piece.j, piece.a_end, piece.v_end);
+    writer.append_change_piece(piece.t, piece.j, piece.a_end, piece.v_end);
   }
   static constexpr bool stopped() noexcept { return false; }
 };
