@@ -359,7 +359,7 @@ double pieces_distance(double v0, double a0, const Piece* pieces, int count) noe
   // Integrated exactly as Profile::append does (same snapping), so that a root found on these
   // distances is a root of the profile that is built.
   for (int i = 0; i < count; ++i)
-    s = advance(s, pieces[i]);
+    s = advance_change(s, pieces[i]);
   return s.p;
 }
 
