@@ -47,4 +47,13 @@ inline KinematicState advance(const KinematicState& s, const Piece& piece) noexc
   return e;
 }
 
+// advance(s, piece) for a piece of a velocity change (velocity_change.hpp), whose end acceleration
+// is always given: the same state without testing a_end.
+inline KinematicState advance_change(const KinematicState& s, const Piece& piece) noexcept {
+  KinematicState e = advance(s, piece.j, piece.t);
+  e.a = piece.a_end;
+  if (!std::isnan(piece.v_end)) e.v = piece.v_end;
+  return e;
+}
+
 }  // namespace nc::detail

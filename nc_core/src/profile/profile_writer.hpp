@@ -39,6 +39,17 @@ class ProfileWriter {
     duration_ += duration;
     return true;
   }
+  // append() for a piece of positive duration whose end acceleration is given (every piece of a
+  // velocity change): the same segment and end state, without the tests for those two.
+  bool append_change_piece(double duration, double jerk, double exact_a, double exact_v) noexcept {
+    if (count_ == Profile::kMaxSegments) return false;
+    profile_.segments_.items[count_++] = Segment{duration_, duration, end_.p, end_.v, end_.a, jerk};
+    end_ = advance(end_, jerk, duration);
+    end_.a = exact_a;
+    if (!std::isnan(exact_v)) end_.v = exact_v;
+    duration_ += duration;
+    return true;
+  }
   // A piece mirrored by `dir` (+1 or -1).
   bool append(const Piece& piece, double dir) noexcept {
     return append(piece.t, dir * piece.j, dir * piece.a_end, dir * piece.v_end);

@@ -23,7 +23,7 @@ struct PushScan {
 
   void put(const Piece& piece) noexcept {
     pieces[count++] = piece;
-    const KinematicState next = advance(s, piece);
+    const KinematicState next = advance_change(s, piece);
     const double s_end = next.p + stop_distance_closed(next.v, next.a, stop);
     if (s_end >= goal) {
       s_next = s_end;

@@ -43,6 +43,79 @@ int upward(double v, double a, double v1, const Bounds& b, double sign, Sink& ou
     a = a_end;
     v = v_end;
   };
+  // The rest of the change once its bound is `cap` up to v1 (no bound change at v = 0 ahead),
+  // in closed form (issue 17): rise (to the final curve, or to the bound and hold), final ramp.
+  // It decides as the loop below would on the same values, in the same order, and writes the
+  // same pieces; it leaves out only the loop's tests that cannot hold on this path (the state
+  // is not outside the bound again, v = 0 is not reached, and after the rise onto the final
+  // curve or the hold up to it the final ramp follows: the curve's excess there is rounding of
+  // a^2 and 2J v, far below k_tol). Returns false where the loop must go on (a start above the
+  // bound, the landing within rounding of the curve, a rise onto it at a = 0), with the pieces
+  // written so far and the state at their end.
+  auto closed = [&](double cap) -> bool {
+    const double kf_abs = std::abs(kf);
+    if (a > cap * (1.0 + kRel)) return false;
+    // 0: at the start; 2: at the bound after a rise; 3: on the final curve (its ramp is next).
+    // One put() per piece in one place (the push scan's put is large).
+    int phase = 0;
+    for (;;) {
+      double t = 0.0;
+      double j = -jerk;
+      double a_end = 0.0;
+      double v_end = v1;
+      bool exact = true;
+      int next = -1;  // the phase after this piece; -1: it is the last one
+      if (phase == 3) {
+        t = a / jerk;
+      } else {
+        if (phase == 2 && std::abs(a) <= tol_a && v >= v1 - tol_v) {
+          // At v1 within rounding (the loop's end test).
+          if (a == 0.0) return true;
+          t = std::abs(a) / jerk;
+          j = a > 0.0 ? -jerk : jerk;
+        } else {
+          const double excess = a * a + 2.0 * jerk * (v - v1);
+          const double k_tol = kRel * (kf_abs + a * a + 2.0 * jerk * std::abs(v));
+          if (a > 0.0 && excess >= -k_tol) {
+            t = a / jerk;  // the final ramp
+          } else if (phase == 2 || a >= cap * (1.0 - kRel)) {
+            // Hold the bound up to the final curve, at the value a has (as the loop does).
+            const double v_curve = v1 - cap * cap / (2.0 * jerk);
+            t = std::max((v_curve - v) / a, 0.0);
+            j = 0.0;
+            a_end = cap;
+            v_end = std::max(v_curve, v);
+            exact = false;
+            next = 3;
+          } else {
+            const double t_cap = (cap - a) / jerk;
+            const double meet2 = 0.5 * (a * a - 2.0 * jerk * (v - v1));
+            const bool on_final = meet2 <= k_tol;
+            if (on_final && a < 0.0 && v > v1) return false;
+            const double a_meet = on_final ? 0.0 : std::sqrt(std::max(meet2, 0.0));
+            const double t_curve = std::max((a_meet - a) / jerk, 0.0);
+            j = jerk;
+            exact = false;
+            if (t_curve <= t_cap) {
+              if (!(a_meet > 0.0)) return false;
+              t = t_curve;
+              a_end = a_meet;
+              v_end = v1 - a_meet * a_meet / (2.0 * jerk);
+              next = 3;
+            } else {
+              t = t_cap;
+              a_end = cap;
+              v_end = v + t_cap * (a + 0.5 * jerk * t_cap);
+              next = 2;
+            }
+          }
+        }
+      }
+      put(t, j, a_end, v_end, exact);
+      if (next < 0 || out.stopped()) return true;
+      phase = next;
+    }
+  };
   for (int iter = 0; iter < kMaxChangePieces; ++iter) {
     if (out.stopped()) return n;  // the sink has what it needs (PushScan)
     const bool neg = v < 0.0 || (v == 0.0 && a < 0.0);
@@ -53,6 +126,14 @@ int upward(double v, double a, double v1, const Bounds& b, double sign, Sink& ou
       if (a != 0.0) put(std::abs(a) / jerk, a > 0.0 ? -jerk : jerk, 0.0, v1, true);
       return n;
     }
+    // No bound change ahead: v stays above 0 up to v1 > 0 (a >= 0, or v's lowest point v_nat
+    // is above 0), or below 0 up to v1 < 0; where a rise could come near v = 0, with a margin
+    // far above the rounding of the loop's tests for reaching it. (closed() returns false before
+    // it writes anything: the loop then takes this state.)
+    const bool closed_form =
+        !neg ? cross && (a >= 0.0 || a * a - 2.0 * jerk * v < -1e-6 * (2.0 * jerk * v))
+             : !cross && v1 < -1e-6 * v_scale;
+    if (closed_form && closed(neg ? b.am : b.ap)) return n;
     const double cap = neg ? b.am : b.ap;
     const double k = neg ? kc : kf;
     // The curve's a reaches 0 at vk (k = 2J vk); differences to it are taken in v, where they
@@ -248,8 +329,9 @@ struct ArraySink {
 };
 struct WriterSink {
   ProfileWriter& writer;
+  // upward() and stop_change() hand on only pieces with t > 0 and a known a_end.
   void put(const Piece& piece) noexcept {
-    writer.append(piece.t, piece.j, piece.a_end, piece.v_end);
+    writer.append_change_piece(piece.t, piece.j, piece.a_end, piece.v_end);
   }
   static constexpr bool stopped() noexcept { return false; }
 };
@@ -277,7 +359,7 @@ double pieces_distance(double v0, double a0, const Piece* pieces, int count) noe
   // Integrated exactly as Profile::append does (same snapping), so that a root found on these
   // distances is a root of the profile that is built.
   for (int i = 0; i < count; ++i)
-    s = advance(s, pieces[i]);
+    s = advance_change(s, pieces[i]);
   return s.p;
 }
 

@@ -23,6 +23,7 @@ inline double natural_velocity(double v, double a, double jerk) noexcept {
 
 // Writes the pieces of the time-optimal change (v0, a0) -> (v1, 0) to `out` (capacity
 // kMaxChangePieces) and returns their number, or -1 if the walk did not close (never expected).
+// Every piece has t > 0 and its end acceleration (a_end); its end velocity where exactly known.
 // Time-optimal: at every instant a is as large towards the needed sign as the path-relative
 // bounds, the bound change at v = 0 and the final ramp allow. Start values outside the bounds are
 // brought back at maximum jerk; the end velocity is never over- or undershot.
@@ -36,7 +37,8 @@ int velocity_change(double v0, double a0, double v1, const Bounds& bounds,
 struct PushScan;
 int velocity_change(double v0, double a0, double v1, const Bounds& bounds, PushScan& scan) noexcept;
 
-// Distance travelled along `pieces` from velocity v0 and acceleration a0.
+// Distance travelled along `pieces` of a velocity change (each gives its end acceleration: every
+// piece velocity_change writes does) from velocity v0 and acceleration a0.
 double pieces_distance(double v0, double a0, const Piece* pieces, int count) noexcept;
 
 }  // namespace nc::detail
