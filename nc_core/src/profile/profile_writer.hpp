@@ -30,9 +30,7 @@ class ProfileWriter {
   // Profile::append: exact_a / exact_v replace the integrated end values unless NaN.
   bool append(double duration, double jerk, double exact_a, double exact_v) noexcept {
     if (!(duration > 0.0)) return true;
-    if (count_ == Profile::kMaxSegments) return false;
-    // Whole-object assignment: begins the element's lifetime in the uncleared storage.
-    profile_.segments_.items[count_++] = Segment{duration_, duration, end_.p, end_.v, end_.a, jerk};
+    if (!put(duration, jerk)) return false;
     end_ = advance(end_, jerk, duration);
     if (!std::isnan(exact_a)) end_.a = exact_a;
     if (!std::isnan(exact_v)) end_.v = exact_v;
@@ -42,8 +40,7 @@ class ProfileWriter {
   // append() for a piece of positive duration whose end acceleration is given (every piece of a
   // velocity change): the same segment and end state, without the tests for those two.
   bool append_change_piece(double duration, double jerk, double exact_a, double exact_v) noexcept {
-    if (count_ == Profile::kMaxSegments) return false;
-    profile_.segments_.items[count_++] = Segment{duration_, duration, end_.p, end_.v, end_.a, jerk};
+    if (!put(duration, jerk)) return false;
     end_ = advance(end_, jerk, duration);
     end_.a = exact_a;
     if (!std::isnan(exact_v)) end_.v = exact_v;
@@ -62,11 +59,10 @@ class ProfileWriter {
   // the anchor replaces; the running end state is the exact end given to close().
   bool append_anchored(double duration, double jerk, double exact_a, double exact_v) noexcept {
     if (!(duration > 0.0)) return true;
-    if (count_ == Profile::kMaxSegments) return false;
-    profile_.segments_.items[count_++] = Segment{duration_, duration, end_.p, end_.v, end_.a, jerk};
+    if (!put(duration, jerk)) return false;
+    end_.a = std::isnan(exact_a) ? end_.a + jerk * duration : exact_a;
     end_.p = NAN;
     end_.v = exact_v;
-    end_.a = std::isnan(exact_a) ? end_.a + jerk * duration : exact_a;
     duration_ += duration;
     anchored_ = true;
     return true;
@@ -108,6 +104,15 @@ class ProfileWriter {
 
  private:
   Profile& profile_;
+  // The next segment, from the running end state and time (whole-object assignment: begins the
+  // element's lifetime in the uncleared storage); false when the profile is full. The caller
+  // then moves the end state and the time on.
+  bool put(double duration, double jerk) noexcept {
+    if (count_ == Profile::kMaxSegments) return false;
+    profile_.segments_.items[count_++] = Segment{duration_, duration, end_.p, end_.v, end_.a, jerk};
+    return true;
+  }
+
   std::size_t count_ = 0;
   double duration_ = 0.0;
   KinematicState end_;
