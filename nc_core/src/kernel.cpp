@@ -71,13 +71,12 @@ constexpr std::size_t kPrefetchAhead = 2;
 // phase (a) reads another axis and may change the coupling graph. Only these commands reach
 // another axis; none of them can be buffered (command_buffer.hpp).
 bool coupling_command_posted(std::span<const std::unique_ptr<detail::ServoAxis>> axes) noexcept {
+  const auto coupling = [](plc::CommandType type) noexcept {
+    return type == plc::CommandType::kGearIn || type == plc::CommandType::kGearInDyn ||
+           type == plc::CommandType::kGearOut;
+  };
   for (const auto& axis : axes) {
-    const plc::CommandMailbox& mailbox = axis->ref().Mailbox;
-    if (mailbox.pending() != 0 &&
-        (mailbox.holds(plc::CommandType::kGearIn) || mailbox.holds(plc::CommandType::kGearInDyn) ||
-         mailbox.holds(plc::CommandType::kGearOut))) {
-      return true;
-    }
+    if (axis->ref().Mailbox.holds(coupling)) return true;
   }
   return false;
 }

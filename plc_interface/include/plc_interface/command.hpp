@@ -137,10 +137,11 @@ class CommandMailbox {
   void set_answer(uint16_t number, CommandState state, uint32_t error_code = 0) noexcept;
 
   std::size_t pending() const noexcept { return count_; }
-  // NC side. Whether a posted command not yet taken is of `type`.
-  bool holds(CommandType type) const noexcept {
+  // NC side. Whether a posted command not yet taken has a type for which `pred(type)` holds.
+  template <class Pred>
+  bool holds(Pred pred) const noexcept {
     for (std::size_t k = 0; k < count_; ++k) {
-      if (queue_[(head_ + k) % kQueueCapacity].type == type) return true;
+      if (pred(queue_[(head_ + k) % kQueueCapacity].type)) return true;
     }
     return false;
   }
