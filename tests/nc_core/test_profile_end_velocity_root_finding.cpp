@@ -1,5 +1,5 @@
 // plan_position with an end velocity where its switch point is hard to find (fuzz findings P10,
-// P12, P14, P15, P17; docs/reliability.md): the root of E(tau) = target inside a jump that the
+// P12, P14, P15, P17, P21; docs/reliability.md): the root of E(tau) = target inside a jump that the
 // velocity change's rounding tolerance makes, a root far below the end of a very long push piece,
 // the first of two crossings inside one push piece (issue 14 item 1, Bellman consistency) and a
 // root past a stretch of the push where E(tau) is flat.
@@ -159,4 +159,31 @@ TEST_CASE("a push hold along which E(tau) stays flat is searched from the end of
   CHECK(prof.duration() == Approx(0.73597761658926975).epsilon(1e-9));
   // Shorter than reaching v_end at A+ and holding it for the 1.87e-9 left (0.740 s).
   CHECK(prof.duration() < (v_end - s.v) / a + 1.8735378199693483e-09 / v_end - 1e-3);
+}
+
+TEST_CASE(
+    "a target inside the jump with v_end away from the push holds v_end from the bracket's upper "
+    "end",
+    "[profile][end_velocity]") {
+  // P21 (CI's 60 s run at a2f0d73): from v = 31.2446 with a = 4.8e-4, far above A± ~ 7.04e-9
+  // (J = 1.36e6), to a target 3.05e-5 ahead passed at v_end = v + 7.3e-12 (2.3e-13 of v). The
+  // direct change holds A+ for 1.0e-3 s and ends 0.0319 ahead, past the target: the push goes
+  // the other way (v_end points away from it). Along the push's first ramp the change's rounding
+  // tolerance takes v_end as reached (one ramp of 5e-15 s), and E(tau) jumps from 0.0319 to
+  // 1.1e-8, past the target; the search ended in the jump and continuity broke by 3.04e-5.
+  // Now the push ends at that upper end and v_end is held for the rest: the target is passed
+  // after D / v_end.
+  const Limits l{1982014.243136033, 7.0415291132253573e-09, 7.0415291131581728e-09,
+                 1360190.2450903798};
+  const KinematicState s{6.5715143469463669e-110, 31.244602158483072, 0.00047673244193634565};
+  const double target = 3.0451428656484566e-05;
+  const double v_end = 31.244602158490355;
+  const Profile prof = planned(s, target, v_end, l);
+  REQUIRE(prof.segment_count() == 3);
+  // The start acceleration ramps to A+ at J (3.5e-10 s, 1.1e-8 mm), then the hold at v_end.
+  CHECK(prof.segment(0).duration == Approx((s.a - l.acceleration) / l.jerk).epsilon(1e-6));
+  CHECK(prof.segment(2).p == Approx(s.v * prof.segment(2).t0).epsilon(1e-9));
+  check_ends_with_hold(prof, v_end, (target - prof.segment(2).p) / v_end);
+  CHECK(prof.duration() == Approx(9.7461406299935058e-07).epsilon(1e-9));
+  CHECK(prof.duration() == Approx(target / v_end).epsilon(1e-3));
 }

@@ -91,6 +91,28 @@ bool absorb_residual(const KinematicState& x, double goal, Piece* change, int n)
   return true;
 }
 
+// The switch's residual E(tau) - goal (x the push's state at tau, relative to the start) and the
+// rounding it is known to: 1e-12 of the path to the change's end (the push so far and each piece
+// of the change; a run-up backwards travels far and comes back, and E carries the rounding of
+// that path), at least of |goal| + |E|. A residual within it is no jump of E.
+struct SwitchResidual {
+  double r = 0.0;
+  double tolerance = 0.0;
+};
+SwitchResidual switch_residual(const KinematicState& x, double goal, const Piece* change,
+                               int n) noexcept {
+  // Integrated as pieces_distance does (the root search's own E).
+  KinematicState s{0.0, x.v, x.a};
+  double path = std::abs(x.p);
+  for (int k = 0; k < n; ++k) {
+    const KinematicState e = detail::advance_change(s, change[k]);
+    path += std::abs(e.p - s.p);
+    s = e;
+  }
+  const double r = x.p + s.p - goal;
+  return {r, 1e-12 * std::max(std::abs(goal) + std::abs(r + goal), path)};
+}
+
 }  // namespace
 
 Profile plan_position(const KinematicState& start, double target, double target_velocity,
@@ -256,27 +278,31 @@ Profile plan_position(const KinematicState& start, double target, double target_
       KinematicState x = detail::advance(s, jerk, tau);
       n_change = detail::velocity_change(x.v, x.a, ve, bounds, change);
       if (n_change < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
-      if (!absorb_residual(x, goal, change, n_change) && ve > 0.0) {
+      if (!absorb_residual(x, goal, change, n_change)) {
         // E(tau) jumps where the change's rounding tolerance takes a state just past the final
-        // curve as on it (fuzz findings P10, P12): an overshoot of ve of that size costs a dip
-        // of a whose time, at ve, is far more distance than the positions' rounding (with a
-        // small A-: v·tol_v / A-). A root inside the jump lands short of the goal from its lower
-        // end and holds ve for the rest (the same distance as the dip to within the overshoot's
-        // share, about 1e-13 of the time).
-        double r = x.p + detail::pieces_distance(x.v, x.a, change, n_change) - goal;
-        double r_tol = 1e-12 * (std::abs(goal) + std::abs(r + goal));
-        if (r > r_tol && tau != lo) {
-          tau = lo;
+        // curve as on it (fuzz findings P10, P12, P21): an overshoot of ve of that size costs a
+        // dip of a whose time, at ve, is far more distance than the positions' rounding (with a
+        // small A-: v·tol_v / A-). A root inside the jump lands short of the goal from the end of
+        // the bracket that stops before it along ve — the lower end when ve > 0, the upper one
+        // when ve < 0 (P21, A± = 7e-9: E jumped from 0.032 past the goal to 1.1e-8 short of it,
+        // along ve) — and holds ve for the rest (the same distance as the dip to within the
+        // overshoot's share, about 1e-13 of the time). A residual within the rounding of E
+        // (switch_residual) is left as it is: the Bellman suite's run-ups of 3.8e9 mm leave 1e-7
+        // there, and a hold at a tiny |ve| would take forever (P14: 7.8e-25 at ve = 3.4e-44).
+        const double along = ve > 0.0 ? 1.0 : -1.0;
+        const double t_short = ve > 0.0 ? lo : hi;
+        SwitchResidual res = switch_residual(x, goal, change, n_change);
+        if (along * res.r > res.tolerance && tau != t_short) {
+          tau = t_short;
           x = detail::advance(s, jerk, tau);
           n_change = detail::velocity_change(x.v, x.a, ve, bounds, change);
           if (n_change < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
-          r = x.p + detail::pieces_distance(x.v, x.a, change, n_change) - goal;
           // The tolerance of this end's own residual (P17: the one of a search that ended far
           // beyond the goal, 5e-7 there, let a shortfall of 1.9e-9 pass without the hold).
-          r_tol = 1e-12 * (std::abs(goal) + std::abs(r + goal));
+          res = switch_residual(x, goal, change, n_change);
         }
-        if (r < -r_tol && n_change < detail::kMaxChangePieces) {
-          change[n_change++] = Piece{-r / ve, 0.0, 0.0, ve};
+        if (along * res.r < -res.tolerance && n_change < detail::kMaxChangePieces) {
+          change[n_change++] = Piece{-res.r / ve, 0.0, 0.0, ve};
         }
       }
       push[i] = Piece{tau, jerk, x.a, NAN};
