@@ -91,6 +91,23 @@ TEST_CASE("a root far below the end of a very long push piece is found",
   CHECK(prof.duration() == Approx(0.051009498038301328).epsilon(1e-12));
 }
 
+TEST_CASE("a residual of E's rounding is no reason for a hold at a tiny v_end, for every sign",
+          "[profile][end_velocity]") {
+  // P14's problem with the signs of a0 and v_end turned (found with P21): the switch search ends
+  // 7.8e-25 from the goal (the rounding of E at a goal of 0), and for two of the four sign pairs
+  // the hold that covered such a residual at |v_end| = 3.4e-44 lasted 7.4e19 s. A residual within
+  // 1e-12 of the switch's path is left as it is: every pair takes the plan to rest's 0.051 s.
+  const Limits l{1000.0, 7.6295109483482109e-06, 5312.5810635538264, 227389.94430457009};
+  for (const double a0 : {9.0626382848859386, -9.0626382848859386}) {
+    for (const double v_end : {3.4331812393645485e-44, -3.4331812393645485e-44}) {
+      INFO("a0 = " << a0 << ", v_end = " << v_end);
+      const KinematicState s{0.0, 0.0, a0};
+      const Profile prof = planned(s, 0.0, v_end, l);
+      CHECK(prof.duration() == Approx(0.051009498038301328).epsilon(1e-12));
+    }
+  }
+}
+
 TEST_CASE("the first switch inside a push piece that slows the motion is taken",
           "[profile][end_velocity]") {
   // Issue 14 item 1, the Bellman suite's seed 3: from v = -V = -3.29 with a = 4.8 to 0.072 mm
