@@ -24,6 +24,7 @@
 #include "profile/push_scan.hpp"
 #include "profile/rest_to_rest.hpp"
 #include "profile/root.hpp"
+#include "profile/stop_change.hpp"
 #include "profile/stop_point.hpp"
 #include "profile/validate.hpp"
 #include "profile/velocity_change.hpp"
@@ -45,6 +46,20 @@ Profile finish(const KinematicState& start, double target, double dir, const Pie
   return detail::finish(start, target, 0.0, dir, head, n_head, cruise, tail, n_tail, false);
 }
 
+// Closes at rest on the target after the head and a cruise with the stop from (v, a) (mirrored
+// frame): the stop's pieces go straight into the profile's anchored tail (issue 17: they were
+// written to an array first; the same pieces, appended the same way).
+Profile finish_stop(const KinematicState& start, double target, double dir, const Piece* head,
+                    int n_head, double cruise, double v, double a, const Bounds& bounds) noexcept {
+  return detail::finish_with(
+      start, target, 0.0, dir, head, n_head, cruise,
+      [&](detail::ProfileWriter& writer) {
+        detail::AnchoredSink sink{writer, dir};
+        detail::stop_change(v, a, bounds, sink);
+      },
+      false);
+}
+
 }  // namespace
 
 Profile plan_position(const KinematicState& start, double target, const Limits& limits) noexcept {
@@ -63,9 +78,6 @@ Profile plan_position(const KinematicState& start, double target, const Limits& 
     return finish(start, target, 1.0, pieces, n_up, 0.0, pieces + n_up, n - n_up);
   }
 
-  detail::PieceBuffer<detail::kMaxChangePieces> stop_room;
-  detail::Piece* stop = stop_room.items;
-  int n_stop = 0;
   const detail::StopBounds stop_bounds(bounds);
   const double stop_distance = detail::stop_distance_of(start.v, start.a, stop_bounds);
   const double rest = distance - stop_distance;
@@ -75,8 +87,9 @@ Profile plan_position(const KinematicState& start, double target, const Limits& 
   const double dead_zone =
       64.0 * DBL_EPSILON * std::max({std::abs(start.p), std::abs(target), std::abs(stop_distance)});
   if (std::abs(rest) <= dead_zone) {
-    n_stop = detail::velocity_change(start.v, start.a, 0.0, bounds, stop);
-    return finish(start, target, 1.0, stop, n_stop, 0.0, nullptr, 0);
+    detail::PieceBuffer<detail::kMaxChangePieces> stop_room;
+    const int n_stop = detail::velocity_change(start.v, start.a, 0.0, bounds, stop_room.items);
+    return finish(start, target, 1.0, stop_room.items, n_stop, 0.0, nullptr, 0);
   }
 
   // Work mirrored so that the target lies ahead (+) of the shortest stop, positions relative to
@@ -193,18 +206,14 @@ Profile plan_position(const KinematicState& start, double target, const Limits& 
     if (std::isnan(tau)) tau = detail::find_root_quadratic(fd, same, lo, hi, t_at, f_lo);
     const KinematicState x = detail::advance(s, jerk, tau);
     push[i] = Piece{tau, jerk, x.a, NAN};
-    n_stop = detail::velocity_change(x.v, x.a, 0.0, bounds, stop);
-    if (n_stop < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
-    return finish(start, target, dir, push, i + 1, 0.0, stop, n_stop);
+    return finish_stop(start, target, dir, push, i + 1, 0.0, x.v, x.a, bounds);
   }
   // The push reaches V: cruise for the rest, then stop from (V, 0). Where that stop ends without
   // the cruise is the scan's last stop point (the stop from the push's end, (V, 0) exactly, or
   // from the start when it is at V within rounding): it is not integrated again from the pieces.
-  n_stop = detail::velocity_change(limits.velocity, 0.0, 0.0, bounds, stop);
-  if (n_stop < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
   const double cruise = (goal - scan.s_here) / limits.velocity;
   const int n_head = detail::settle_push(push, n_push, s.a, limits.jerk);
-  return finish(start, target, dir, push, n_head, cruise, stop, n_stop);
+  return finish_stop(start, target, dir, push, n_head, cruise, limits.velocity, 0.0, bounds);
 }
 
 }  // namespace nc
