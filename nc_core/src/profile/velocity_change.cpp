@@ -281,19 +281,25 @@ struct WriterSink {
 
 }  // namespace
 
-int velocity_change(double v0, double a0, double v1, const Bounds& bounds, Piece* out) noexcept {
+// Each entry is flattened (issue 17): the walk, its sink and what they call (the push scan's
+// stop points, stop_distance_of among them) are inlined into one body per sink, without the calls
+// between them. Measured with callgrind (planner_instructions, instructions per plan): any state
+// to rest 1647.7 -> 1584.7, to a velocity 601 -> 577, passing at a velocity 7989 -> 7713; the
+// same operations, so the same profiles bit for bit.
+[[gnu::flatten]] int velocity_change(double v0, double a0, double v1, const Bounds& bounds,
+                                     Piece* out) noexcept {
   ArraySink sink{out};
   return change(v0, a0, v1, bounds, sink);
 }
 
-int velocity_change(double v0, double a0, double v1, const Bounds& bounds,
-                    ProfileWriter& writer) noexcept {
+[[gnu::flatten]] int velocity_change(double v0, double a0, double v1, const Bounds& bounds,
+                                     ProfileWriter& writer) noexcept {
   WriterSink sink{writer};
   return change(v0, a0, v1, bounds, sink);
 }
 
-int velocity_change(double v0, double a0, double v1, const Bounds& bounds,
-                    PushScan& scan) noexcept {
+[[gnu::flatten]] int velocity_change(double v0, double a0, double v1, const Bounds& bounds,
+                                     PushScan& scan) noexcept {
   return change(v0, a0, v1, bounds, scan);
 }
 
