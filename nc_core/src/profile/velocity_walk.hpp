@@ -36,7 +36,9 @@ int upward(double v, double a, double v1, const Bounds& b, double sign, Sink& ou
   // Scales of the problem itself (not of the bounds, which may be far larger than needed).
   const double v_scale = std::max({std::abs(v1), std::abs(v), a * a / jerk});
   const double tol_v = kRel * v_scale;
-  const double tol_a = kRel * std::sqrt(jerk * v_scale);
+  // The acceleration's tolerance at v1, taken only where v is at v1 within tol_v (issue 17: its
+  // square root on every walk cost more than the rare test it serves).
+  auto tol_a = [&] { return kRel * std::sqrt(jerk * v_scale); };
   int n = 0;
   // Appends a piece and moves the walk's state to its (exactly known) end.
   auto put = [&](double t, double j, double a_end, double v_end, bool v_exact) {
@@ -72,7 +74,7 @@ int upward(double v, double a, double v1, const Bounds& b, double sign, Sink& ou
       if (phase == 3) {
         t = a / jerk;
       } else {
-        if (phase == 2 && std::abs(a) <= tol_a && v >= v1 - tol_v) {
+        if (phase == 2 && v >= v1 - tol_v && std::abs(a) <= tol_a()) {
           // At v1 within rounding (the loop's end test).
           if (a == 0.0) return true;
           t = std::abs(a) / jerk;
@@ -123,7 +125,7 @@ int upward(double v, double a, double v1, const Bounds& b, double sign, Sink& ou
   for (int iter = 0; iter < kMaxChangePieces; ++iter) {
     if (out.stopped()) return n;  // the sink has what it needs (PushScan)
     const bool neg = v < 0.0 || (v == 0.0 && a < 0.0);
-    if ((!neg || !cross) && std::abs(a) <= tol_a && v >= v1 - tol_v) {
+    if ((!neg || !cross) && v >= v1 - tol_v && std::abs(a) <= tol_a()) {
       // At v1 within rounding. An acceleration left there still ramps to 0 at J (a piece of
       // rounding-size duration): it may be all of A when J is huge against A (fuzz finding P6:
       // A = 7e-9, J = 6e8, tol_a = 1.3e-8), and dropping it would jump a by A.
