@@ -27,7 +27,7 @@
 #include "profile/stop_change.hpp"
 #include "profile/stop_point.hpp"
 #include "profile/validate.hpp"
-#include "profile/velocity_change.hpp"
+#include "profile/velocity_walk.hpp"
 
 namespace nc {
 namespace {
@@ -60,28 +60,14 @@ Profile finish_stop(const KinematicState& start, double target, double dir, cons
       false);
 }
 
-}  // namespace
-
-// Flattened (issue 17): the stop distance, the switch search with its stop points and the
-// profile's assembly inlined into one body (any state to rest 1584.7 -> 1566.4 instructions per
-// plan, rest to rest 726.9 -> 715.7; the same operations, the same profiles bit for bit).
-[[gnu::flatten]] Profile plan_position(const KinematicState& start, double target,
-                                       const Limits& limits) noexcept {
-  const ErrorCode e = detail::check_plan(start, target, limits);
-  if (e != ErrorCode::kNone) return Profile::failure(e);
-
-  const Bounds bounds{limits.acceleration, limits.deceleration, limits.jerk};
-  const double distance = target - start.p;
-
-  if (start.v == 0.0 && start.a == 0.0) {
-    // From rest: the same profile in closed form.
-    detail::PieceBuffer<7> pieces_room;
-    detail::Piece* pieces = pieces_room.items;
-    int n_up = 0;
-    const int n = detail::rest_to_rest(distance, limits.velocity, bounds, pieces, n_up);
-    return finish(start, target, 1.0, pieces, n_up, 0.0, pieces + n_up, n - n_up);
-  }
-
+// plan_position from a moving start (inputs checked). Flattened (issue 17): the start's stop
+// distance, the push walk with its scan (walk::change here, not velocity_change's entry, so that
+// the scan's state is not handed across a call), the switch search with its stop points and the
+// profile's assembly in one body. Apart from the rest-to-rest path, which so does not pay for
+// its frame.
+[[gnu::flatten, gnu::noinline]] Profile from_moving(const KinematicState& start, double target,
+                                                    const Limits& limits, const Bounds& bounds,
+                                                    double distance) noexcept {
   const detail::StopBounds stop_bounds(bounds);
   const double stop_distance = detail::stop_distance_of(start.v, start.a, stop_bounds);
   const double rest = distance - stop_distance;
@@ -106,7 +92,7 @@ Profile finish_stop(const KinematicState& start, double target, double dir, cons
   detail::PushScan scan{
       push, {0.0, dir * start.v, dir * start.a}, dir * stop_distance, goal, stop_bounds};
   const int n_push =
-      detail::velocity_change(dir * start.v, dir * start.a, limits.velocity, bounds, scan);
+      detail::walk::change(dir * start.v, dir * start.a, limits.velocity, bounds, scan);
   if (n_push < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
   const KinematicState s = scan.s;
   if (scan.found) {
@@ -218,6 +204,29 @@ Profile finish_stop(const KinematicState& start, double target, double dir, cons
   const double cruise = (goal - scan.s_here) / limits.velocity;
   const int n_head = detail::settle_push(push, n_push, s.a, limits.jerk);
   return finish_stop(start, target, dir, push, n_head, cruise, limits.velocity, 0.0, bounds);
+}
+
+}  // namespace
+
+// Flattened (issue 17): the checks and the rest-to-rest profile's assembly inlined.
+[[gnu::flatten]] Profile plan_position(const KinematicState& start, double target,
+                                       const Limits& limits) noexcept {
+  const ErrorCode e = detail::check_plan(start, target, limits);
+  if (e != ErrorCode::kNone) return Profile::failure(e);
+
+  const Bounds bounds{limits.acceleration, limits.deceleration, limits.jerk};
+  const double distance = target - start.p;
+
+  if (start.v == 0.0 && start.a == 0.0) {
+    // From rest: the same profile in closed form.
+    detail::PieceBuffer<7> pieces_room;
+    detail::Piece* pieces = pieces_room.items;
+    int n_up = 0;
+    const int n = detail::rest_to_rest(distance, limits.velocity, bounds, pieces, n_up);
+    return finish(start, target, 1.0, pieces, n_up, 0.0, pieces + n_up, n - n_up);
+  }
+
+  return from_moving(start, target, limits, bounds, distance);
 }
 
 }  // namespace nc
