@@ -37,13 +37,18 @@ Profile build_change(const KinematicState& start, double v1, const detail::Bound
 [[gnu::flatten]] Profile plan_velocity(const KinematicState& start, double velocity,
                                        const Limits& limits) noexcept {
   // (check_plan's target check passes for 0: the checks of the state, the limits and the start.)
-  ErrorCode e = detail::check_plan(start, 0.0, limits);
-  if (e == ErrorCode::kNone && !std::isfinite(velocity)) e = ErrorCode::kParameterNotFinite;
-  if (e == ErrorCode::kNone &&
-      (std::abs(velocity) > limits.velocity || !detail::velocity_in_range(velocity))) {
-    e = ErrorCode::kVelocityNotAllowed;
+  // The common case in one test (issue 17): with the limits in range, |velocity| <= V bounds it
+  // by kMaxMagnitude and fails for NaN and infinity.
+  if (!(detail::plain_inputs(start, 0.0, limits) && std::abs(velocity) <= limits.velocity &&
+        detail::zero_or_not_tiny(velocity))) {
+    ErrorCode e = detail::check_plan(start, 0.0, limits);
+    if (e == ErrorCode::kNone && !std::isfinite(velocity)) e = ErrorCode::kParameterNotFinite;
+    if (e == ErrorCode::kNone &&
+        (std::abs(velocity) > limits.velocity || !detail::velocity_in_range(velocity))) {
+      e = ErrorCode::kVelocityNotAllowed;
+    }
+    if (e != ErrorCode::kNone) return Profile::failure(e);
   }
-  if (e != ErrorCode::kNone) return Profile::failure(e);
   return build_change(start, velocity, {limits.acceleration, limits.deceleration, limits.jerk},
                       true);
 }
