@@ -6,7 +6,7 @@
 // so the direction is the side of the target relative to the shortest stop from the start, and
 // tau is the root of S(tau) = target: first bracketed between the push's piece boundaries, then
 // solved by second-order steps on exact derivatives (profile/root.hpp, profile/stop_point.hpp).
-// From rest the same profile comes in closed form (profile/rest_to_rest.cpp). Seed 000 §2.1's 7
+// From rest the same profile comes in closed form (profile/rest_to_rest.hpp). Seed 000 §2.1's 7
 // phases are the rest-to-rest special case (push = phases 1-3 up to the switch, cruise = phase 4,
 // stop = phases 5-7); a target the axis cannot stop before gives a push in the opposite direction,
 // i.e. one continuous profile reversing through v = 0. Start states outside the limits are brought
