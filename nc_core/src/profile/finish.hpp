@@ -21,12 +21,17 @@ inline int settle_push(Piece* push, int n_push, double a, double jerk) noexcept 
   return 1;
 }
 
-// Appends the head pieces (mirrored back by `dir`), a cruise and the tail pieces, and closes
-// exactly on (target, v_end, 0), holding v_end past the end when `holds`. Everything after the
-// head is anchored back from that exact end, so both ends are exact relative to their own values.
-inline Profile finish(const KinematicState& start, double target, double v_end, double dir,
-                      const Piece* head, int n_head, double cruise, const Piece* tail, int n_tail,
-                      bool holds) noexcept {
+// Appends the head pieces (mirrored back by `dir`), a cruise and the tail that `append_tail`
+// appends to the writer it is given (ProfileWriter::append_anchored), and closes exactly on
+// (target, v_end, 0), holding v_end past the end when `holds`. Everything after the head is
+// anchored back from that exact end, so both ends are exact relative to their own values.
+// kInlineAnchor: the anchoring inlined (ProfileWriter::anchor_to_end) or called
+// (Profile::anchor_to_end; the end-velocity planner, where inlining it cost 27 instructions per
+// plan).
+template <bool kInlineAnchor = true, class AppendTail>
+inline Profile finish_with(const KinematicState& start, double target, double v_end, double dir,
+                           const Piece* head, int n_head, double cruise,
+                           const AppendTail& append_tail, bool holds) noexcept {
   Profile profile;
   ProfileWriter writer(profile, start);
   for (int i = 0; i < n_head; ++i)
@@ -36,11 +41,14 @@ inline Profile finish(const KinematicState& start, double target, double v_end, 
   const double head_end_p = writer.end_state().p;
   const std::size_t tail_start = writer.count();
   writer.append_anchored(cruise, 0.0, NAN, NAN);
-  for (int i = 0; i < n_tail; ++i)
-    writer.append_anchored(tail[i], dir);
+  append_tail(writer);
   const KinematicState end{target, v_end, 0.0};
   writer.close(&end, holds);
-  profile.anchor_to_end(tail_start);
+  if constexpr (kInlineAnchor) {
+    ProfileWriter::anchor_to_end(profile, tail_start);
+  } else {
+    profile.anchor_to_end(tail_start);
+  }
   // The tail is integrated backward from the exact end the same way, down to the first segment
   // the anchor placed. The last line of defence against overflow with extreme (finite) inputs, a
   // profile whose numbers are not all finite is never handed out: the head's end, that p and the
@@ -53,5 +61,27 @@ inline Profile finish(const KinematicState& start, double target, double v_end, 
   }
   return profile;
 }
+
+// finish_with for a tail of pieces (mirrored back by `dir`).
+template <bool kInlineAnchor = true>
+inline Profile finish(const KinematicState& start, double target, double v_end, double dir,
+                      const Piece* head, int n_head, double cruise, const Piece* tail, int n_tail,
+                      bool holds) noexcept {
+  return finish_with<kInlineAnchor>(
+      start, target, v_end, dir, head, n_head, cruise,
+      [&](ProfileWriter& writer) {
+        for (int i = 0; i < n_tail; ++i)
+          writer.append_anchored(tail[i], dir);
+      },
+      holds);
+}
+
+// A sink of pieces (stop_change, velocity_change.cpp's sinks) that appends them to a profile's
+// anchored tail, mirrored back by `dir`.
+struct AnchoredSink {
+  ProfileWriter& writer;
+  double dir;
+  void put(const Piece& piece) noexcept { writer.append_anchored(piece, dir); }
+};
 
 }  // namespace nc::detail

@@ -6,7 +6,7 @@
 // so the direction is the side of the target relative to the shortest stop from the start, and
 // tau is the root of S(tau) = target: first bracketed between the push's piece boundaries, then
 // solved by second-order steps on exact derivatives (profile/root.hpp, profile/stop_point.hpp).
-// From rest the same profile comes in closed form (profile/rest_to_rest.cpp). Seed 000 §2.1's 7
+// From rest the same profile comes in closed form (profile/rest_to_rest.hpp). Seed 000 §2.1's 7
 // phases are the rest-to-rest special case (push = phases 1-3 up to the switch, cruise = phase 4,
 // stop = phases 5-7); a target the axis cannot stop before gives a push in the opposite direction,
 // i.e. one continuous profile reversing through v = 0. Start states outside the limits are brought
@@ -24,9 +24,10 @@
 #include "profile/push_scan.hpp"
 #include "profile/rest_to_rest.hpp"
 #include "profile/root.hpp"
+#include "profile/stop_change.hpp"
 #include "profile/stop_point.hpp"
 #include "profile/validate.hpp"
-#include "profile/velocity_change.hpp"
+#include "profile/velocity_walk.hpp"
 
 namespace nc {
 namespace {
@@ -45,27 +46,28 @@ Profile finish(const KinematicState& start, double target, double dir, const Pie
   return detail::finish(start, target, 0.0, dir, head, n_head, cruise, tail, n_tail, false);
 }
 
-}  // namespace
+// Closes at rest on the target after the head and a cruise with the stop from (v, a) (mirrored
+// frame): the stop's pieces go straight into the profile's anchored tail (issue 17: they were
+// written to an array first; the same pieces, appended the same way).
+Profile finish_stop(const KinematicState& start, double target, double dir, const Piece* head,
+                    int n_head, double cruise, double v, double a, const Bounds& bounds) noexcept {
+  return detail::finish_with(
+      start, target, 0.0, dir, head, n_head, cruise,
+      [&](detail::ProfileWriter& writer) {
+        detail::AnchoredSink sink{writer, dir};
+        detail::stop_change(v, a, bounds, sink);
+      },
+      false);
+}
 
-Profile plan_position(const KinematicState& start, double target, const Limits& limits) noexcept {
-  const ErrorCode e = detail::check_plan(start, target, limits);
-  if (e != ErrorCode::kNone) return Profile::failure(e);
-
-  const Bounds bounds{limits.acceleration, limits.deceleration, limits.jerk};
-  const double distance = target - start.p;
-
-  if (start.v == 0.0 && start.a == 0.0) {
-    // From rest: the same profile in closed form.
-    detail::PieceBuffer<7> pieces_room;
-    detail::Piece* pieces = pieces_room.items;
-    int n_up = 0;
-    const int n = detail::rest_to_rest(distance, limits.velocity, bounds, pieces, n_up);
-    return finish(start, target, 1.0, pieces, n_up, 0.0, pieces + n_up, n - n_up);
-  }
-
-  detail::PieceBuffer<detail::kMaxChangePieces> stop_room;
-  detail::Piece* stop = stop_room.items;
-  int n_stop = 0;
+// plan_position from a moving start (inputs checked). Flattened (issue 17): the start's stop
+// distance, the push walk with its scan (walk::change here, not velocity_change's entry, so that
+// the scan's state is not handed across a call), the switch search with its stop points and the
+// profile's assembly in one body. Apart from the rest-to-rest path, which so does not pay for
+// its frame.
+[[gnu::flatten, gnu::noinline]] Profile from_moving(const KinematicState& start, double target,
+                                                    const Limits& limits, const Bounds& bounds,
+                                                    double distance) noexcept {
   const detail::StopBounds stop_bounds(bounds);
   const double stop_distance = detail::stop_distance_of(start.v, start.a, stop_bounds);
   const double rest = distance - stop_distance;
@@ -75,8 +77,9 @@ Profile plan_position(const KinematicState& start, double target, const Limits& 
   const double dead_zone =
       64.0 * DBL_EPSILON * std::max({std::abs(start.p), std::abs(target), std::abs(stop_distance)});
   if (std::abs(rest) <= dead_zone) {
-    n_stop = detail::velocity_change(start.v, start.a, 0.0, bounds, stop);
-    return finish(start, target, 1.0, stop, n_stop, 0.0, nullptr, 0);
+    detail::PieceBuffer<detail::kMaxChangePieces> stop_room;
+    const int n_stop = detail::velocity_change(start.v, start.a, 0.0, bounds, stop_room.items);
+    return finish(start, target, 1.0, stop_room.items, n_stop, 0.0, nullptr, 0);
   }
 
   // Work mirrored so that the target lies ahead (+) of the shortest stop, positions relative to
@@ -89,7 +92,7 @@ Profile plan_position(const KinematicState& start, double target, const Limits& 
   detail::PushScan scan{
       push, {0.0, dir * start.v, dir * start.a}, dir * stop_distance, goal, stop_bounds};
   const int n_push =
-      detail::velocity_change(dir * start.v, dir * start.a, limits.velocity, bounds, scan);
+      detail::walk::change(dir * start.v, dir * start.a, limits.velocity, bounds, scan);
   if (n_push < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
   const KinematicState s = scan.s;
   if (scan.found) {
@@ -193,18 +196,37 @@ Profile plan_position(const KinematicState& start, double target, const Limits& 
     if (std::isnan(tau)) tau = detail::find_root_quadratic(fd, same, lo, hi, t_at, f_lo);
     const KinematicState x = detail::advance(s, jerk, tau);
     push[i] = Piece{tau, jerk, x.a, NAN};
-    n_stop = detail::velocity_change(x.v, x.a, 0.0, bounds, stop);
-    if (n_stop < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
-    return finish(start, target, dir, push, i + 1, 0.0, stop, n_stop);
+    return finish_stop(start, target, dir, push, i + 1, 0.0, x.v, x.a, bounds);
   }
   // The push reaches V: cruise for the rest, then stop from (V, 0). Where that stop ends without
   // the cruise is the scan's last stop point (the stop from the push's end, (V, 0) exactly, or
   // from the start when it is at V within rounding): it is not integrated again from the pieces.
-  n_stop = detail::velocity_change(limits.velocity, 0.0, 0.0, bounds, stop);
-  if (n_stop < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
   const double cruise = (goal - scan.s_here) / limits.velocity;
   const int n_head = detail::settle_push(push, n_push, s.a, limits.jerk);
-  return finish(start, target, dir, push, n_head, cruise, stop, n_stop);
+  return finish_stop(start, target, dir, push, n_head, cruise, limits.velocity, 0.0, bounds);
+}
+
+}  // namespace
+
+// Flattened (issue 17): the checks and the rest-to-rest profile's assembly inlined.
+[[gnu::flatten]] Profile plan_position(const KinematicState& start, double target,
+                                       const Limits& limits) noexcept {
+  const ErrorCode e = detail::check_plan(start, target, limits);
+  if (e != ErrorCode::kNone) return Profile::failure(e);
+
+  const Bounds bounds{limits.acceleration, limits.deceleration, limits.jerk};
+  const double distance = target - start.p;
+
+  if (start.v == 0.0 && start.a == 0.0) {
+    // From rest: the same profile in closed form.
+    detail::PieceBuffer<7> pieces_room;
+    detail::Piece* pieces = pieces_room.items;
+    int n_up = 0;
+    const int n = detail::rest_to_rest(distance, limits.velocity, bounds, pieces, n_up);
+    return finish(start, target, 1.0, pieces, n_up, 0.0, pieces + n_up, n - n_up);
+  }
+
+  return from_moving(start, target, limits, bounds, distance);
 }
 
 }  // namespace nc

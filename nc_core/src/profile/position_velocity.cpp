@@ -38,7 +38,7 @@ constexpr double kSwitchOvershoot = 1e-6;
 Profile finish_moving(const KinematicState& start, double target, double v_end, double dir,
                       const Piece* head, int n_head, double cruise, const Piece* tail,
                       int n_tail) noexcept {
-  return detail::finish(start, target, v_end, dir, head, n_head, cruise, tail, n_tail, true);
+  return detail::finish<false>(start, target, v_end, dir, head, n_head, cruise, tail, n_tail, true);
 }
 
 // Distance of the time-optimal change (v, a) -> v1; NaN if the walk does not close.

@@ -84,6 +84,29 @@ class ProfileWriter {
     profile.cursor_ = 0;
   }
 
+  // Profile::anchor_to_end, inline for the planners (issue 17: a call into profile.cpp before).
+  static void anchor_to_end(Profile& profile, std::size_t first) noexcept {
+    // The first segment keeps the start state itself.
+    if (first == 0) first = 1;
+    // Velocities first (back from the final one), then positions from those: a state sampled on
+    // the tail is then consistent with the exact end to the rounding of its own values, not of the
+    // largest values the profile went through before. A segment built to start at v = 0 exactly
+    // (a crossing of v = 0, set exactly by the planner) keeps that start: back from a large final
+    // velocity the crossing would carry that velocity's rounding, and a long hold before it would
+    // multiply it into the positions (fuzz finding P18: 1 ulp of 600 mm/s, 1.1e-13, over a hold at
+    // A- = 3.6e-9 of 9500 s moved the switch by 1.08e-9 mm).
+    double next_p = profile.final_.p;
+    double next_v = profile.final_.v;
+    for (std::size_t i = profile.segments_.count; i > first; --i) {
+      Segment& seg = profile.segments_.items[i - 1];
+      const double t = seg.duration;
+      if (seg.v != 0.0) seg.v = next_v - t * (seg.a + 0.5 * seg.j * t);
+      seg.p = next_p - t * (seg.v + t * (0.5 * seg.a + t * (seg.j / 6.0)));
+      next_v = seg.v;
+      next_p = seg.p;
+    }
+  }
+
   std::size_t count() const noexcept { return count_; }
   const KinematicState& end_state() const noexcept { return end_; }
 

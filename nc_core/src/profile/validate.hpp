@@ -96,19 +96,21 @@ inline double ramp_end_bound(const KinematicState& s, const Limits& l) noexcept 
   return std::max(ap, am);
 }
 
+// check_start_against's common case (issue 17): |a| within min(A+, A-), |v| within V, a^2 within
+// J V (the forced velocity within 1.5 V) and V^2 within kMaxStopDistance A- / 4 pass every one of
+// its tests, with a margin far above their rounding.
+inline bool start_plainly_inside(const KinematicState& s, const Limits& l) noexcept {
+  return std::abs(s.a) <= std::min(l.acceleration, l.deceleration) && std::abs(s.v) <= l.velocity &&
+         s.a * s.a <= l.jerk * l.velocity &&
+         l.velocity * l.velocity <= (0.25 * kMaxStopDistance) * l.deceleration;
+}
+
 // A start too far outside `l` (both already in range), or too fast to stop within
 // kMaxStopDistance: kStartFarOutsideLimits. The acceleration counts against the bound where its
 // ramp ends (ramp_end_bound): the profile's a there keeps a few ulp of |a0|, which must stay
 // within the planner's 1e-9 of that bound (P8, P9).
 inline ErrorCode check_start_against(const KinematicState& s, const Limits& l) noexcept {
-  // The common case (issue 17): |a| within min(A+, A-), |v| within V, a^2 within J V (the forced
-  // velocity within 1.5 V) and V^2 within kMaxStopDistance A- / 4 pass every test below, with a
-  // margin far above their rounding; the tests are only made for the other starts.
-  if (std::abs(s.a) <= std::min(l.acceleration, l.deceleration) && std::abs(s.v) <= l.velocity &&
-      s.a * s.a <= l.jerk * l.velocity &&
-      l.velocity * l.velocity <= (0.25 * kMaxStopDistance) * l.deceleration) {
-    return ErrorCode::kNone;
-  }
+  if (start_plainly_inside(s, l)) return ErrorCode::kNone;
   const double forced = std::abs(s.v + s.a * std::abs(s.a) / (2.0 * l.jerk));
   const double speed = std::max(std::abs(s.v), forced);
   if (!(std::abs(s.a) <= kMaxStartRatio * ramp_end_bound(s, l)) ||
@@ -139,26 +141,34 @@ inline ErrorCode check_target(double target) noexcept {
   return ErrorCode::kNone;
 }
 
-// check_state(s), check_target(target), check_limits(l) and check_start_against(s, l), in this
-// order: the first code found. When every value lies plainly inside its range (the common case),
-// one test stands for the first three (each of them gives kNone then).
-inline ErrorCode check_plan(const KinematicState& s, double target, const Limits& l) noexcept {
-  // NaN and infinities fail every comparison below as they fail the checks.
-  auto in_range = [](double x) {
-    const double m = std::abs(x);
-    return x == 0.0 || (m >= kMinMagnitude && m <= kMaxMagnitude);
-  };
+// 0, or |x| at least kMinMagnitude (NaN fails): velocity_in_range where |x| <= kMaxMagnitude is
+// known otherwise.
+inline bool zero_or_not_tiny(double x) noexcept {
+  return std::abs(x) >= kMinMagnitude || x == 0.0;
+}
+
+// The common case of check_plan (issue 17): every limit within [kMinLimit, kMaxLimit], |s.p| and
+// |target| within kMaxMagnitude, v and a 0 or not below kMinMagnitude, and the start plainly
+// inside its limits (start_plainly_inside: |v| <= V and |a| <= min(A+, A-) bound v and a by
+// kMaxLimit = kMaxMagnitude as well, and fail for NaN). Then check_state, check_target,
+// check_limits and check_start_against all give kNone; false says nothing.
+inline bool plain_inputs(const KinematicState& s, double target, const Limits& l) noexcept {
   auto limit = [](double x) { return x >= kMinLimit && x <= kMaxLimit; };
-  const bool plain = std::abs(s.p) <= kMaxMagnitude && std::abs(target) <= kMaxMagnitude &&
-                     in_range(s.v) && in_range(s.a) && limit(l.velocity) && limit(l.acceleration) &&
-                     limit(l.deceleration) && limit(l.jerk);
-  if (!plain) {
-    ErrorCode e = check_state(s);
-    if (e == ErrorCode::kNone) e = check_target(target);
-    if (e == ErrorCode::kNone) e = check_limits(l);
-    if (e != ErrorCode::kNone) return e;
-  }
-  return check_start_against(s, l);
+  return limit(l.velocity) && limit(l.acceleration) && limit(l.deceleration) && limit(l.jerk) &&
+         std::abs(s.p) <= kMaxMagnitude && std::abs(target) <= kMaxMagnitude &&
+         zero_or_not_tiny(s.v) && zero_or_not_tiny(s.a) && start_plainly_inside(s, l);
+}
+
+// check_state(s), check_target(target), check_limits(l) and check_start_against(s, l), in this
+// order: the first code found. Inputs plainly inside their ranges (plain_inputs, the common case)
+// pass all four in one test.
+inline ErrorCode check_plan(const KinematicState& s, double target, const Limits& l) noexcept {
+  if (plain_inputs(s, target, l)) return ErrorCode::kNone;
+  ErrorCode e = check_state(s);
+  if (e == ErrorCode::kNone) e = check_target(target);
+  if (e == ErrorCode::kNone) e = check_limits(l);
+  if (e == ErrorCode::kNone) e = check_start_against(s, l);
+  return e;
 }
 
 }  // namespace nc::detail

@@ -28,14 +28,9 @@ inline double natural_velocity(double v, double a, double jerk) noexcept {
 // bounds, the bound change at v = 0 and the final ramp allow. Start values outside the bounds are
 // brought back at maximum jerk; the end velocity is never over- or undershot.
 int velocity_change(double v0, double a0, double v1, const Bounds& bounds, Piece* out) noexcept;
-// The same pieces appended straight to a profile under construction.
-int velocity_change(double v0, double a0, double v1, const Bounds& bounds,
-                    ProfileWriter& writer) noexcept;
-
-// The same pieces handed to plan_position's push scan (profile/push_scan.hpp), which may stop the
-// walk early: then the pieces so far are returned (the count the scan holds).
-struct PushScan;
-int velocity_change(double v0, double a0, double v1, const Bounds& bounds, PushScan& scan) noexcept;
+// (plan_velocity and plan_stop append the pieces straight to their profile, plan_position hands
+// them to its push scan, which may stop the walk early: walk::change with a walk::WriterSink or a
+// PushScan, profile/velocity_walk.hpp, inlined into those planners.)
 
 // Distance travelled along `pieces` of a velocity change (each gives its end acceleration: every
 // piece velocity_change writes does) from velocity v0 and acceleration a0.
