@@ -267,3 +267,39 @@ TEST_CASE("a plan to rest whose stop point starts nearly flat finds its switch",
   check_rest_switch(start, target, l, {}, 2.6836719609189457, 4.7207379403815857,
                     1.5911744304771096);
 }
+
+// Fuzz finding P22 (main at fc36bdc, CI's seed 1): a stop (plan_velocity to 0) from v = -8578
+// with a start acceleration 1.6e-15 above A- (within the walk's tolerance, so taken as at A-, no
+// ramp) held A- for 1.8e7 s with the time taken at A- while the profile held the start's value:
+// v passed 0 by 1.4e-11 still at A-, twice the A+ beyond. The hold's time is now taken at the
+// value it holds; it ends on the final ramp's curve, before v = 0.
+TEST_CASE("a stop from just above A- holds the start's acceleration only up to its final ramp",
+          "[profile][regression]") {
+  const KinematicState start{0.00047679227941355493, -8577.9999009073563, 0.00047679227941089749};
+  const Limits l{31.247058823529411, 0.00023839613970588403, 0.00047679227941088969, 8589934592.0};
+  REQUIRE(start.a > l.deceleration);
+  REQUIRE(start.a <= l.deceleration * (1.0 + 1e-13));
+  profile_checks::StartRelief relief;
+  relief.over_speed = true;
+  relief.over_acceleration = true;
+  for (const bool via_stop : {false, true}) {
+    INFO((via_stop ? "plan_stop" : "plan_velocity"));
+    const Profile prof =
+        via_stop ? nc::plan_stop(start, l.deceleration, l.jerk) : nc::plan_velocity(start, 0.0, l);
+    REQUIRE(prof.ok());
+    Limits keep = l;
+    keep.velocity = std::fabs(start.v) * (1.0 + 1e-9);
+    // plan_stop has no A+: it keeps A- both ways (profile.hpp); plan_velocity keeps A+ past v = 0.
+    keep.acceleration = via_stop ? l.deceleration : l.acceleration;
+    const profile_checks::Finding f =
+        profile_checks::check_velocity_profile(prof, start, 0.0, keep, {}, relief);
+    INFO(profile_checks::to_string(f));
+    CHECK(f.ok());
+    // The hold, then the final ramp at J: the hold ends on the curve v = -A-^2 / 2J, below 0.
+    REQUIRE(prof.segment_count() == 2);
+    const nc::Segment& ramp = prof.segment(1);
+    CHECK(ramp.v == -l.deceleration * l.deceleration / (2.0 * l.jerk));
+    CHECK(ramp.v < 0.0);
+    CHECK(prof.duration() == Approx(-start.v / start.a).epsilon(1e-12));
+  }
+}

@@ -3,6 +3,7 @@
 // tail (issue 17: without a piece array between them). A sink has put(const Piece&).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 #include "profile/kinematics.hpp"
@@ -28,6 +29,11 @@ int stop_change(double v, double a, const Bounds& b, Sink& out) noexcept {
       ++n;
     }
   };
+  // The acceleration the hold at A- has: A- after a ramp onto it; a start within
+  // kDecisionTolerance above A- is taken as at it and held as it is, so the hold's time is taken
+  // at that value, else a long hold drifts past v = 0 (fuzz finding P22: 1.6e-15 above A- for
+  // 1.8e7 s crossed v = 0 by 1.4e-11 still at A-, twice the A+ beyond; P7 in the walk).
+  double held = am;
   if (a > am * (1.0 + kDecisionTolerance)) {
     const double t = (a - am) / jerk;
     put(t, -jerk, am, NAN);
@@ -61,10 +67,11 @@ int stop_change(double v, double a, const Bounds& b, Sink& out) noexcept {
     const double t = (am - a) / jerk;
     put(t, jerk, am, NAN);
     if (t > 0.0) v += t * (a + 0.5 * jerk * t);
+    held = std::max(a, am);
     a = am;
   }
   const double v_curve = -am * am / (2.0 * jerk);
-  put((v_curve - v) / am, 0.0, am, v_curve);
+  put((v_curve - v) / held, 0.0, am, v_curve);
   put(am / jerk, -jerk, 0.0, 0.0);
   return n;
 }
