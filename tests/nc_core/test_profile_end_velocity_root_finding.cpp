@@ -95,15 +95,35 @@ TEST_CASE("a residual of E's rounding is no reason for a hold at a tiny v_end, f
           "[profile][end_velocity]") {
   // P14's problem with the signs of a0 and v_end turned (found with P21): the switch search ends
   // 7.8e-25 from the goal (the rounding of E at a goal of 0), and for two of the four sign pairs
-  // the hold that covered such a residual at |v_end| = 3.4e-44 lasted 7.4e19 s. A residual within
-  // 1e-12 of the switch's path is left as it is: every pair takes the plan to rest's 0.051 s.
-  const Limits l{1000.0, 7.6295109483482109e-06, 5312.5810635538264, 227389.94430457009};
-  for (const double a0 : {9.0626382848859386, -9.0626382848859386}) {
-    for (const double v_end : {3.4331812393645485e-44, -3.4331812393645485e-44}) {
-      INFO("a0 = " << a0 << ", v_end = " << v_end);
-      const KinematicState s{0.0, 0.0, a0};
-      const Profile prof = planned(s, 0.0, v_end, l);
-      CHECK(prof.duration() == Approx(0.051009498038301328).epsilon(1e-12));
+  // the hold that covered such a residual at |v_end| = 3.4e-44 lasted 7.4e19 s. And the same with
+  // V = 937.5, A+ = 7.48e-6, |v_end| = 9.0e-44 (found by fuzz_planner's detour bound): there the
+  // push goes 1e-8 mm out and comes back, E carries the rounding of that path, and all four pairs
+  // held for 1.1e19-1.2e20 s. A residual within 1e-12 of the switch's path (the push's and the
+  // change's) is left as it is: every pair takes the plan to rest's time.
+  struct Problem {
+    Limits limits;
+    double v_end;
+    double duration;
+  };
+  const Problem problems[] = {
+      {{1000.0, 7.6295109483482109e-06, 5312.5810635538264, 227389.94430457009},
+       3.4331812393645485e-44,
+       0.051009498038301328},
+      {{937.49904631113145, 7.4769207293812475e-06, 5312.5810635538264, 227389.94430457009},
+       8.9683101716788293e-44,
+       0.051526377523177833},
+  };
+  for (const Problem& problem : problems) {
+    for (const double a0 : {9.0626382848859386, -9.0626382848859386}) {
+      for (const double sign : {1.0, -1.0}) {
+        const double v_end = sign * problem.v_end;
+        INFO("V = " << problem.limits.velocity << ", a0 = " << a0 << ", v_end = " << v_end);
+        const KinematicState s{0.0, 0.0, a0};
+        const Profile prof = planned(s, 0.0, v_end, problem.limits);
+        CHECK(prof.duration() == Approx(problem.duration).epsilon(1e-12));
+        const Profile rest = nc::plan_position(s, 0.0, problem.limits);
+        CHECK(prof.duration() == Approx(rest.duration()).epsilon(1e-12));
+      }
     }
   }
 }

@@ -92,18 +92,18 @@ bool absorb_residual(const KinematicState& x, double goal, Piece* change, int n)
 }
 
 // The switch's residual E(tau) - goal (x the push's state at tau, relative to the start) and the
-// rounding it is known to: 1e-12 of the path to the change's end (the push so far and each piece
-// of the change; a run-up backwards travels far and comes back, and E carries the rounding of
-// that path), at least of |goal| + |E|. A residual within it is no jump of E.
+// rounding it is known to: 1e-12 of the path to the change's end (`push_path`, the push's own up
+// to x, and each piece of the change; a push or a run-up that travels far and comes back leaves
+// the rounding of that path in E), at least of |goal| + |E|. A residual within it is no jump of E.
 struct SwitchResidual {
   double r = 0.0;
   double tolerance = 0.0;
 };
-SwitchResidual switch_residual(const KinematicState& x, double goal, const Piece* change,
-                               int n) noexcept {
+SwitchResidual switch_residual(const KinematicState& x, double push_path, double goal,
+                               const Piece* change, int n) noexcept {
   // Integrated as pieces_distance does (the root search's own E).
   KinematicState s{0.0, x.v, x.a};
-  double path = std::abs(x.p);
+  double path = push_path;
   for (int k = 0; k < n; ++k) {
     const KinematicState e = detail::advance_change(s, change[k]);
     path += std::abs(e.p - s.p);
@@ -169,6 +169,7 @@ Profile plan_position(const KinematicState& start, double target, double target_
   if (n_push < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
 
   KinematicState s{0.0, dir * start.v, dir * start.a};
+  double push_path = 0.0;  // the distance the push's whole pieces so far travel (both ways)
   double e_here = dir * change_end;  // where the change to ve from s ends
   for (int i = 0; i < n_push; ++i) {
     const KinematicState next = detail::advance(s, push[i]);
@@ -291,7 +292,8 @@ Profile plan_position(const KinematicState& start, double target, double target_
         // there, and a hold at a tiny |ve| would take forever (P14: 7.8e-25 at ve = 3.4e-44).
         const double along = ve > 0.0 ? 1.0 : -1.0;
         const double t_short = ve > 0.0 ? lo : hi;
-        SwitchResidual res = switch_residual(x, goal, change, n_change);
+        SwitchResidual res =
+            switch_residual(x, push_path + std::abs(x.p - s.p), goal, change, n_change);
         if (along * res.r > res.tolerance && tau != t_short) {
           tau = t_short;
           x = detail::advance(s, jerk, tau);
@@ -299,7 +301,7 @@ Profile plan_position(const KinematicState& start, double target, double target_
           if (n_change < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
           // The tolerance of this end's own residual (P17: the one of a search that ended far
           // beyond the goal, 5e-7 there, let a shortfall of 1.9e-9 pass without the hold).
-          res = switch_residual(x, goal, change, n_change);
+          res = switch_residual(x, push_path + std::abs(x.p - s.p), goal, change, n_change);
         }
         if (along * res.r < -res.tolerance && n_change < detail::kMaxChangePieces) {
           change[n_change++] = Piece{-res.r / ve, 0.0, 0.0, ve};
@@ -308,6 +310,7 @@ Profile plan_position(const KinematicState& start, double target, double target_
       push[i] = Piece{tau, jerk, x.a, NAN};
       return finish_moving(start, target, v_end, dir, push, i + 1, 0.0, change, n_change);
     }
+    push_path += std::abs(next.p - s.p);
     s = next;
     e_here = e_next;
   }
