@@ -98,7 +98,7 @@ TEST_CASE("a residual of E's rounding is no reason for a hold at a tiny v_end, f
   // the hold that covered such a residual at |v_end| = 3.4e-44 lasted 7.4e19 s. And the same with
   // V = 937.5, A+ = 7.48e-6, |v_end| = 9.0e-44 (found by fuzz_planner's detour bound): there the
   // push goes 1e-8 mm out and comes back, E carries the rounding of that path, and all four pairs
-  // held for 1.1e19-1.2e20 s. A residual within 1e-12 of the switch's path (the push's and the
+  // held for 1.1e19-1.2e20 s. A residual within 1e-11 of the switch's path (the push's and the
   // change's) is left as it is: every pair takes the plan to rest's time.
   struct Problem {
     Limits limits;
@@ -125,6 +125,32 @@ TEST_CASE("a residual of E's rounding is no reason for a hold at a tiny v_end, f
         CHECK(prof.duration() == Approx(rest.duration()).epsilon(1e-12));
       }
     }
+  }
+}
+
+TEST_CASE("a residual of E's rounding after a long path is left as a step, not held at v_end",
+          "[profile][end_velocity]") {
+  // Found by fuzz_planner's detour bound (P23). P17's start with v_end = 1e-42, A- = 8.0e-9,
+  // J = 7.0e-9: a residual of 1.3e-19 mm was held for 1.35e23 s. And from v = 31.24 with
+  // a = 4.8e-4 to a target 3.05e-5 ahead at v_end = 1.1e-19 with A- = 2.3e-9: a run-up of
+  // 2.1e11 mm out and back left 0.57 mm (1.3e-12 of its path), held for 5.3e18 s. Both are left
+  // as a position step now (within 1e-11 of the path and the positions' scale); the plans take
+  // 2.00001 s and 2.7e10 s, no longer than a path through rest (2.00029 s, 2.7e10 s).
+  {
+    const Limits l{1982014.243136033, 7.0415291166948042e-09, 8.0294609917413229e-09,
+                   7.041529113169559e-09};
+    const KinematicState s{6.5715143469463669e-110, 7.041529113169559e-09, 9.9741677046594516e-43};
+    const Profile prof = planned(s, 7.0415291131643709e-09, 9.9741677046594516e-43, l);
+    CHECK(prof.duration() == Approx(2.000012612928828).epsilon(1e-9));
+  }
+  {
+    const Limits l{2589308.4901807462, 31.244602158483978, 2.2997679229248524e-09,
+                   31.244602188890209};
+    const KinematicState s{6.5715143469463327e-110, 31.244602158482163, 0.00047673244193634478};
+    const Profile prof = planned(s, 3.0517567111197432e-05, 1.0842021724855044e-19, l);
+    CHECK(prof.duration() == Approx(27171961006.876804).epsilon(1e-9));
+    // The run-up: the stop at A- from 31.24 takes v / A- = 1.36e10 s, and the way back as long.
+    CHECK(prof.duration() == Approx(2.0 * s.v / l.deceleration).epsilon(1e-6));
   }
 }
 

@@ -92,15 +92,20 @@ bool absorb_residual(const KinematicState& x, double goal, Piece* change, int n)
 }
 
 // The switch's residual E(tau) - goal (x the push's state at tau, relative to the start) and the
-// rounding it is known to: 1e-12 of the path to the change's end (`push_path`, the push's own up
+// rounding it is known to: 1e-11 of the path to the change's end (`push_path`, the push's own up
 // to x, and each piece of the change; a push or a run-up that travels far and comes back leaves
-// the rounding of that path in E), at least of |goal| + |E|. A residual within it is no jump of E.
+// the rounding of that path in E), at least of |goal| + |E| and of the positions' scale
+// `p_scale` (max(1, |start|, |target|), as the profile's continuity is judged). A residual within
+// it is no jump of E that needs the hold at v_end: a position step of that size is left instead,
+// 100 times below what the profile checks allow (a hold at a tiny |v_end| would last r / |v_end|:
+// 1.4e23 s for 1.3e-19 mm at 1e-42 mm/s; 5e18 s for 0.57 mm, 1.3e-12 of a run-up of 4.2e11 mm,
+// at 1e-19 mm/s).
 struct SwitchResidual {
   double r = 0.0;
   double tolerance = 0.0;
 };
 SwitchResidual switch_residual(const KinematicState& x, double push_path, double goal,
-                               const Piece* change, int n) noexcept {
+                               double p_scale, const Piece* change, int n) noexcept {
   // Integrated as pieces_distance does (the root search's own E).
   KinematicState s{0.0, x.v, x.a};
   double path = push_path;
@@ -110,7 +115,7 @@ SwitchResidual switch_residual(const KinematicState& x, double push_path, double
     s = e;
   }
   const double r = x.p + s.p - goal;
-  return {r, 1e-12 * std::max(std::abs(goal) + std::abs(r + goal), path)};
+  return {r, 1e-11 * std::max({std::abs(goal) + std::abs(r + goal), path, p_scale})};
 }
 
 }  // namespace
@@ -293,7 +298,7 @@ Profile plan_position(const KinematicState& start, double target, double target_
         const double along = ve > 0.0 ? 1.0 : -1.0;
         const double t_short = ve > 0.0 ? lo : hi;
         SwitchResidual res =
-            switch_residual(x, push_path + std::abs(x.p - s.p), goal, change, n_change);
+            switch_residual(x, push_path + std::abs(x.p - s.p), goal, p_scale, change, n_change);
         if (along * res.r > res.tolerance && tau != t_short) {
           tau = t_short;
           x = detail::advance(s, jerk, tau);
@@ -301,7 +306,8 @@ Profile plan_position(const KinematicState& start, double target, double target_
           if (n_change < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
           // The tolerance of this end's own residual (P17: the one of a search that ended far
           // beyond the goal, 5e-7 there, let a shortfall of 1.9e-9 pass without the hold).
-          res = switch_residual(x, push_path + std::abs(x.p - s.p), goal, change, n_change);
+          res =
+              switch_residual(x, push_path + std::abs(x.p - s.p), goal, p_scale, change, n_change);
         }
         if (along * res.r < -res.tolerance && n_change < detail::kMaxChangePieces) {
           change[n_change++] = Piece{-res.r / ve, 0.0, 0.0, ve};
