@@ -5,7 +5,8 @@
 // acceleration makes |v| pass V whatever is done, the unavoidable peak is the bound) — and ends
 // exactly at the target (at rest, or passing it at plan_position's end velocity) or at the
 // requested velocity. The checks are the planner tests' own (tests/support/profile_checks.hpp),
-// with their tolerances.
+// with their tolerances. And plan_position takes no longer than a path through rest
+// (detour_bound; P23: holds of 1e19 s at a tiny v_end kept every other check).
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
