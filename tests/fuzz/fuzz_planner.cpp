@@ -153,8 +153,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
     const double bound = detour_bound(start, goal, v_end, limits);
     // A check for detours, not for optimality (the Bellman and reference suites do that): slack
     // 1e-3 of the bound and 1 µs (a fiftieth of the shortest NC cycle; problems at positions of
-    // 1e-108 mm take detours of 2e-8 s through their rounding, of no consequence). Finding P24
-    // (docs/reliability.md) is 1.9e-6 over the bound.
+    // 1e-108 mm take detours of 2e-8 s through their rounding, of no consequence). A time that
+    // hangs on a distance at a tiny acceleration inherits the positions' rounding (P24 in
+    // docs/reliability.md: one ulp at 1.57e11 mm was 1.9e-6 of the time).
     if (profile.duration() > bound * (1.0 + 1e-3) + 1e-6) {
       char what[160];
       std::snprintf(what, sizeof what,
