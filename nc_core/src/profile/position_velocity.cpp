@@ -294,7 +294,8 @@ Profile plan_position(const KinematicState& start, double target, double target_
         // along ve) — and holds ve for the rest (the same distance as the dip to within the
         // overshoot's share, about 1e-13 of the time). A residual within the rounding of E
         // (switch_residual) is left as it is: the Bellman suite's run-ups of 3.8e9 mm leave 1e-7
-        // there, and a hold at a tiny |ve| would take forever (P14: 7.8e-25 at ve = 3.4e-44).
+        // there, and a hold at a tiny |ve| would take forever (P23; P14's problem with its signs
+        // turned: 7.8e-25 at |ve| = 3.4e-44, 7.4e19 s).
         const double along = ve > 0.0 ? 1.0 : -1.0;
         const double t_short = ve > 0.0 ? lo : hi;
         SwitchResidual res =
