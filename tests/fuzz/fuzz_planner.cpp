@@ -6,7 +6,9 @@
 // exactly at the target (at rest, or passing it at plan_position's end velocity) or at the
 // requested velocity. The checks are the planner tests' own (tests/support/profile_checks.hpp),
 // with their tolerances. And plan_position takes no longer than a path through rest
-// (detour_bound; P23: holds of 1e19 s at a tiny v_end kept every other check).
+// (detour_bound; P23: holds of 1e19 s at a tiny v_end kept every other check), and a velocity
+// change or a stop no longer than a ramp of the start acceleration to 0 and a trapezoid.
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -74,6 +76,30 @@ double detour_bound(const nc::KinematicState& s, double target, double v_end, co
   return stop.duration() + move.duration() + run_up_time;
 }
 
+// An upper bound of the optimal time of a velocity change from `s` to `v_goal` with a = 0: ramp
+// the start acceleration to 0 at J (as fast as J allows; it passes v1 = v + a·|a| / 2J, the peak
+// the limits let through), then change v1 to v_goal at `a_max`, the smaller of the accelerations
+// the change may use, over a trapezoid (or a triangle, where the change is below a_max² / J). The
+// planner's profile keeps the same limits and so takes no longer, to rounding. Infinite where a
+// value overflows (no bound then).
+double velocity_change_bound(const nc::KinematicState& s, double v_goal, double a_max, double j) {
+  const double ramp = std::fabs(s.a) / j;
+  const double v1 = s.v + s.a * std::fabs(s.a) / (2.0 * j);
+  const double change = std::fabs(v_goal - v1);
+  const double trapezoid =
+      change >= a_max * a_max / j ? change / a_max + a_max / j : 2.0 * std::sqrt(change / j);
+  return ramp + trapezoid;
+}
+
+// The time check of every call: slack 1e-3 of the bound and 1 µs (a fiftieth of the shortest NC
+// cycle; problems at positions of 1e-108 mm take detours of 2e-8 s through their rounding, of no
+// consequence). A time that hangs on a distance at a tiny acceleration inherits the positions'
+// rounding (P24 in docs/reliability.md: one ulp at 1.57e11 mm was 1.9e-6 of the time). A bound
+// that is NaN or infinite checks nothing.
+bool above_bound(double duration, double bound) {
+  return std::isfinite(bound) && duration > bound * (1.0 + 1e-3) + 1e-6;
+}
+
 [[noreturn]] void report(const char* kind, const nc::KinematicState& s, double target, double v_end,
                          const nc::Limits& l, const std::string& what) {
   std::fprintf(stderr, "%s\n%s\n", pc::describe_passing_problem(kind, s, target, v_end, l).c_str(),
@@ -117,6 +143,14 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
                      : stop     ? "plan_stop (A- and J used)"
                                 : "plan_velocity";
 
+  const auto check_time = [&](const nc::Profile& p, double bound, const char* path) {
+    if (!above_bound(p.duration(), bound)) return;
+    char what[200];
+    std::snprintf(what, sizeof what, "duration %.17g s above the bound %.17g s of %s", p.duration(),
+                  bound, path);
+    report(kind, start, goal, v_end, limits, what);
+  };
+
   if (!profile.ok()) {
     if (profile.error() == nc::ErrorCode::kNone)
       report(kind, start, goal, v_end, limits, "no code");
@@ -135,6 +169,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
     const pc::Finding finding =
         pc::check_velocity_profile(profile, start, 0.0, keep, {}, relief_for(start, keep));
     if (!finding.ok()) report(kind, start, goal, v_end, limits, pc::to_string(finding));
+    check_time(profile, velocity_change_bound(start, 0.0, limits.deceleration, limits.jerk),
+               "a ramp of a to 0 and a trapezoid at A-");
     return 0;
   }
   // Accepted: the inputs must have been valid …
@@ -149,20 +185,14 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
       position ? pc::check_passing_profile(profile, start, goal, v_end, keep, {}, relief)
                : pc::check_velocity_profile(profile, start, goal, keep, {}, relief);
   if (!finding.ok()) report(kind, start, goal, v_end, limits, pc::to_string(finding));
+  // A check for detours, not for optimality (the Bellman and reference suites do that).
   if (position) {
-    const double bound = detour_bound(start, goal, v_end, limits);
-    // A check for detours, not for optimality (the Bellman and reference suites do that): slack
-    // 1e-3 of the bound and 1 µs (a fiftieth of the shortest NC cycle; problems at positions of
-    // 1e-108 mm take detours of 2e-8 s through their rounding, of no consequence). A time that
-    // hangs on a distance at a tiny acceleration inherits the positions' rounding (P24 in
-    // docs/reliability.md: one ulp at 1.57e11 mm was 1.9e-6 of the time).
-    if (profile.duration() > bound * (1.0 + 1e-3) + 1e-6) {
-      char what[160];
-      std::snprintf(what, sizeof what,
-                    "duration %.17g s above the bound %.17g s of a path through rest",
-                    profile.duration(), bound);
-      report(kind, start, goal, v_end, limits, what);
-    }
+    check_time(profile, detour_bound(start, goal, v_end, limits), "a path through rest");
+  } else {
+    check_time(profile,
+               velocity_change_bound(
+                   start, goal, std::min(limits.acceleration, limits.deceleration), limits.jerk),
+               "a ramp of a to 0 and a trapezoid at min(A+, A-)");
   }
   return 0;
 }
