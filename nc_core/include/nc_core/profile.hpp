@@ -23,7 +23,8 @@ namespace nc {
 using ErrorCode = plc::ErrorCode;
 
 namespace detail {
-class ProfileWriter;  // the planners' inline builder (nc_core/src/profile/profile_writer.hpp)
+class ProfileWriter;     // the planners' inline builder (nc_core/src/profile/profile_writer.hpp)
+struct ProfileBuild {};  // tag of the Profile a ProfileWriter starts (internal)
 }  // namespace detail
 
 struct KinematicState {
@@ -58,7 +59,8 @@ class SegmentTable {
  public:
   static constexpr std::size_t kCapacity = 24;
 
-  SegmentTable() noexcept {}
+  SegmentTable() noexcept : count(0) {}
+  explicit SegmentTable(ProfileBuild) noexcept {}  // count left to the ProfileWriter
   SegmentTable(const SegmentTable& other) noexcept;
   SegmentTable& operator=(const SegmentTable& other) noexcept;
   ~SegmentTable() = default;
@@ -67,7 +69,7 @@ class SegmentTable {
   // none is), searched from `cursor` forwards or backwards and left there.
   std::size_t find(double t, std::size_t& cursor) const noexcept;
 
-  std::size_t count = 0;  // first: with the Profile's header on the line of the first segment
+  std::size_t count;  // first: with the Profile's header on the line of the first segment
   union {
     Segment items[kCapacity];
   };
@@ -82,6 +84,10 @@ class SegmentTable {
 class Profile {
  public:
   static constexpr std::size_t kMaxSegments = detail::SegmentTable::kCapacity;
+
+  // Empty: no segments, duration 0, ok(), the start and final states at rest at 0.
+  Profile() noexcept
+      : duration_(0.0), cursor_(0), error_(ErrorCode::kNone), holds_velocity_(false) {}
 
   static Profile failure(ErrorCode code) noexcept;
 
@@ -128,12 +134,21 @@ class Profile {
  private:
   friend class detail::ProfileWriter;
 
+  // The profile a ProfileWriter starts (ProfileWriter::begin): the header's fields and the segment
+  // count are left to the writer, which sets each of them before the profile is handed out (issue
+  // 17: the empty profile's fields, stored and then overwritten, cost about 11 stores per plan).
+  // The second form also sets the start and the exact final state where the planner knows both.
+  explicit Profile(detail::ProfileBuild) noexcept : segments_(detail::ProfileBuild{}) {}
+  Profile(detail::ProfileBuild, const KinematicState& start, const KinematicState& end) noexcept
+      : segments_(detail::ProfileBuild{}), start_(start), final_(end), end_(end) {}
+
   // What at() reads first, then the segments: a cycle's sample touches the header's line and the
   // segment's, not the end of the table.
-  double duration_ = 0.0;
-  mutable std::size_t cursor_ = 0;  // the segment of the last at() / jerk_at()
-  ErrorCode error_ = ErrorCode::kNone;
-  bool holds_velocity_ = false;
+  // Set by the default constructor; the writer's constructor leaves them to the writer.
+  double duration_;
+  mutable std::size_t cursor_;  // the segment of the last at() / jerk_at()
+  ErrorCode error_;
+  bool holds_velocity_;
   detail::SegmentTable segments_;
   KinematicState start_{};
   KinematicState final_{};

@@ -218,12 +218,18 @@ Profile finish_stop(const KinematicState& start, double target, double dir, cons
   const double distance = target - start.p;
 
   if (start.v == 0.0 && start.a == 0.0) {
-    // From rest: the same profile in closed form.
-    detail::PieceBuffer<7> pieces_room;
-    detail::Piece* pieces = pieces_room.items;
-    int n_up = 0;
-    const int n = detail::rest_to_rest(distance, limits.velocity, bounds, pieces, n_up);
-    return finish(start, target, 1.0, pieces, n_up, 0.0, pieces + n_up, n - n_up);
+    // From rest: the same profile in closed form, its pieces straight into the profile.
+    const detail::RestToRest rest(distance, limits.velocity, bounds);
+    return detail::finish_around(
+        start, target, 0.0,
+        [&](detail::ProfileWriter& writer) {
+          rest.up([&](const Piece& piece) { writer.append(piece, 1.0); });
+        },
+        0.0,
+        [&](detail::ProfileWriter& writer) {
+          rest.down([&](const Piece& piece) { writer.append_anchored(piece, 1.0); });
+        },
+        false);
   }
 
   return from_moving(start, target, limits, bounds, distance);

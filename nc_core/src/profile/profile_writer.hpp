@@ -13,10 +13,23 @@ namespace nc::detail {
 
 class ProfileWriter {
  public:
+  // A Profile for a ProfileWriter(profile, start) to build: its fields are left for the writer
+  // (the constructor, close() or fail() sets each before the profile is handed out).
+  static Profile begin() noexcept { return Profile(ProfileBuild{}); }
+  // The same with the start state and the exact final state set, for ProfileWriter(profile,
+  // ProfileBuild{}) and close_at_end(): the profile finish() builds.
+  static Profile begin(const KinematicState& start, const KinematicState& end) noexcept {
+    return Profile(ProfileBuild{}, start, end);
+  }
   // Starts `profile` at `start` (Profile::reset).
   ProfileWriter(Profile& profile, const KinematicState& start) noexcept
       : profile_(profile), end_(start) {
     profile.start_ = start;
+    profile.error_ = ErrorCode::kNone;
+    profile.cursor_ = 0;
+  }
+  // Starts a profile from begin(start, end) at its start state.
+  ProfileWriter(Profile& profile, ProfileBuild) noexcept : profile_(profile), end_(profile.start_) {
     profile.error_ = ErrorCode::kNone;
     profile.cursor_ = 0;
   }
@@ -122,6 +135,14 @@ class ProfileWriter {
     store();
     if (anchored_ && exact_end != nullptr) profile_.end_ = *exact_end;
     profile_.final_ = exact_end != nullptr ? *exact_end : end_;
+    profile_.holds_velocity_ = holds_velocity;
+  }
+  // close(&end, holds_velocity) for a profile from begin(start, end), whose final state (and, after
+  // append_anchored, running end state) is that end already.
+  void close_at_end(bool holds_velocity) const noexcept {
+    profile_.segments_.count = count_;
+    profile_.duration_ = duration_;
+    if (!anchored_) profile_.end_ = end_;
     profile_.holds_velocity_ = holds_velocity;
   }
 

@@ -79,42 +79,61 @@ inline double peak_velocity(double distance, const Bounds& b) noexcept {
   return u * u;
 }
 
-// The pieces of a velocity ramp 0 -> vp (sign +1) or vp -> 0 (sign -1) with bound A.
-inline int ramp(double vp, double bound, double jerk, double sign, bool up, Piece* out) noexcept {
-  int n = 0;
+// The pieces of a velocity ramp 0 -> vp (sign +1) or vp -> 0 (sign -1) with bound A, handed to
+// `put` in order.
+template <class Put>
+inline void ramp(double vp, double bound, double jerk, double sign, bool up,
+                 const Put& put) noexcept {
   const double v_start = up ? 0.0 : vp;
   const double v_end = up ? vp : 0.0;
   const double dir = up ? 1.0 : -1.0;  // sign of a during the ramp
   if (vp * jerk >= bound * bound) {
     const double t = bound / jerk;
-    out[n++] = Piece{t, sign * dir * jerk, sign * dir * bound, NAN};
-    out[n++] = Piece{(vp - bound * bound / jerk) / bound, 0.0, sign * dir * bound, NAN};
-    out[n++] = Piece{t, -sign * dir * jerk, 0.0, sign * v_end};
+    put(Piece{t, sign * dir * jerk, sign * dir * bound, NAN});
+    put(Piece{(vp - bound * bound / jerk) / bound, 0.0, sign * dir * bound, NAN});
+    put(Piece{t, -sign * dir * jerk, 0.0, sign * v_end});
   } else {
     const double t = std::sqrt(vp / jerk);
-    out[n++] = Piece{t, sign * dir * jerk, sign * dir * jerk * t, sign * 0.5 * (v_start + v_end)};
-    out[n++] = Piece{t, -sign * dir * jerk, 0.0, sign * v_end};
+    put(Piece{t, sign * dir * jerk, sign * dir * jerk * t, sign * 0.5 * (v_start + v_end)});
+    put(Piece{t, -sign * dir * jerk, 0.0, sign * v_end});
   }
-  return n;
 }
 
 }  // namespace rest_parts
 
-// Pieces of the time-optimal motion over `distance` > 0 from rest to rest (seed 000 §2.1's 7
-// phases); returns their number (at most 7) and sets `n_up` to the number of the acceleration
-// pieces. The same profile as the general push-then-stop path.
-inline int rest_to_rest(double distance, double velocity, const Bounds& bounds, Piece* out,
-                        int& n_up) noexcept {
-  const double sign = distance < 0.0 ? -1.0 : 1.0;
-  const double d = std::abs(distance);
-  const double d_max = rest_parts::there_and_back(velocity, bounds);
-  const double vp =
-      d >= d_max ? velocity : std::min(rest_parts::peak_velocity(d, bounds), velocity);
-  int n = rest_parts::ramp(vp, bounds.ap, bounds.j, sign, true, out);
-  n_up = n;
-  if (d > d_max) out[n++] = Piece{(d - d_max) / velocity, 0.0, 0.0, sign * velocity};
-  n += rest_parts::ramp(vp, bounds.am, bounds.j, sign, false, out + n);
-  return n;
-}
+// The time-optimal motion over `distance` from rest to rest (seed 000 §2.1's 7 phases): its peak
+// velocity, then its pieces (at most 7) from up() and down(). The same profile as the general
+// push-then-stop path.
+class RestToRest {
+ public:
+  RestToRest(double distance, double velocity, const Bounds& bounds) noexcept
+      : velocity_(velocity),
+        bounds_(bounds),
+        sign_(distance < 0.0 ? -1.0 : 1.0),
+        d_(std::abs(distance)),
+        d_max_(rest_parts::there_and_back(velocity, bounds)),
+        vp_(d_ >= d_max_ ? velocity : std::min(rest_parts::peak_velocity(d_, bounds), velocity)) {}
+
+  // The acceleration pieces, to `put` in order (issue 17: straight into the profile, not to an
+  // array first).
+  template <class Put>
+  void up(const Put& put) const noexcept {
+    rest_parts::ramp(vp_, bounds_.ap, bounds_.j, sign_, true, put);
+  }
+  // The cruise (where there is one) and the deceleration pieces.
+  template <class Put>
+  void down(const Put& put) const noexcept {
+    if (d_ > d_max_) put(Piece{(d_ - d_max_) / velocity_, 0.0, 0.0, sign_ * velocity_});
+    rest_parts::ramp(vp_, bounds_.am, bounds_.j, sign_, false, put);
+  }
+
+ private:
+  double velocity_;
+  Bounds bounds_;
+  double sign_;
+  double d_;
+  double d_max_;
+  double vp_;
+};
 
 }  // namespace nc::detail

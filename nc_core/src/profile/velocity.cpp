@@ -12,7 +12,7 @@ namespace {
 Profile build_change(const KinematicState& start, double v1, const detail::Bounds& bounds,
                      bool holds) noexcept {
   // One returned object (no copy of the profile on return).
-  Profile profile;
+  Profile profile = detail::ProfileWriter::begin();
   detail::ProfileWriter writer(profile, start);
   detail::walk::WriterSink sink{writer};
   if (detail::walk::change(start.v, start.a, v1, bounds, sink) < 0) {

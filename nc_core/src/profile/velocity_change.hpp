@@ -3,6 +3,8 @@
 // plan_position uses it for the push towards ±V and for the stop at the target.
 #pragma once
 
+#include <cmath>
+
 #include "profile/kinematics.hpp"
 #include "profile/profile_writer.hpp"
 
@@ -16,9 +18,12 @@ inline constexpr int kMaxChangePieces = 10;
 // it of a boundary are taken as on it, so re-planning from a sampled state follows the same path.
 inline constexpr double kDecisionTolerance = 1e-13;
 
-// The velocity at which a reaches 0 when it is brought there with maximum jerk.
+// The velocity at which a reaches 0 when it is brought there with maximum jerk. Every caller
+// compares it (with 0 or a velocity): |a| as std::abs (one mask; issue 17: the select of -a or a
+// took five instructions per call, about a dozen calls per plan) differs from that select only in
+// the sign of a zero result, which no comparison sees.
 inline double natural_velocity(double v, double a, double jerk) noexcept {
-  return v + a * (a < 0.0 ? -a : a) / (2.0 * jerk);
+  return v + a * std::abs(a) / (2.0 * jerk);
 }
 
 // Writes the pieces of the time-optimal change (v0, a0) -> (v1, 0) to `out` (capacity
