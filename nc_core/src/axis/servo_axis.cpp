@@ -48,7 +48,10 @@ void ServoAxis::phase_commands(CouplingPort& port) noexcept {
   AxisMonitoring(*this).check_enables();
   // command_buffer.cpp: a waiting command takes over; a pass left alone stops. Neither without
   // a waiting command or a pass.
-  if (buffer_.waiting || job_.passing()) BufferedCommands(*this).run_buffer(port);
+  if (buffer_.waiting || job_.passing()) {
+    note_event();
+    BufferedCommands(*this).run_buffer(port);
+  }
   if (job_.is_motion()) {
     OnlineChange(*this).run_online_functions();  // only a motion job has online functions
   }
@@ -90,6 +93,7 @@ void ServoAxis::phase_drive_command(const KinematicState& drive, ErrorCode stop,
                                     plc::CoupleState role) noexcept {
   if (two_speed_) return;  // never an HLI target (the stage refuses it, 0x4040): d = q
   if (stop != ErrorCode::kNone) raise_error(stop);
+  if (role != hli_role_) note_event();  // CoupleState, AxisState
   hli_role_ = role;
   drive_command_ = drive;
   drive_offset_ = drive.p - set_.p;
@@ -114,7 +118,12 @@ void ServoAxis::phase_monitors(AxisSnapshot& snapshot) noexcept {
   AxisMonitoring(*this).finish_job();
   snapshot.error = channel_.error();
   snapshot.error_event = error_event_;
-  snapshot.group_reaction_due = propagation_.pending && GroupErrors(*this).group_reaction_due();
+  if (propagation_.pending) {
+    note_event();  // the C7 delay runs (StateDWord bit 6) and ends here
+    snapshot.group_reaction_due = GroupErrors(*this).group_reaction_due();
+  } else {
+    snapshot.group_reaction_due = false;
+  }
   const uint32_t control = channel_.ref().PlcToNc.ControlDWord;
   snapshot.controller_enabled = plc::test_bit(control, plc::kControlEnable);
   snapshot.feed_enabled_plus = plc::test_bit(control, plc::kControlFeedEnablePlus);
@@ -135,10 +144,12 @@ void AxisMonitoring::check_enables() noexcept {
   a.enable_seen_ = enabled;
   if (a.slave_count_ == 0) {  // no group to follow this axis: never case 2 (follows_by_hand())
     GroupErrors(a).end_by_hand();
-  } else if (GroupErrors(a).update_by_hand()) {
-    return;  // C8 case 2: the group follows this master pushed by hand
+  } else {
+    a.note_event();
+    if (GroupErrors(a).update_by_hand()) return;  // C8 case 2: the group follows by hand
   }
   if (!enabled) {
+    a.note_event();
     // Losing the controller enable while a command runs is an axis error (enable_loss.cpp);
     // there is no ramp to run (the drive is off), so the job ends here and the set values follow
     // the actual position.
@@ -193,6 +204,7 @@ void AxisMonitoring::finish_job() noexcept {
   // must not answer CmdNo, which may be a command already answered (fuzz finding K12).
   const bool own = a.channel_.runs(a.job_.number());
   if (a.homing_.finished()) {
+    a.note_event();
     a.channel_.answer_current(CommandState::kDone);
     a.homing_.clear();
     a.target_ = a.set_.p;  // where the homing stopped: the windows watch it from now on
@@ -205,6 +217,7 @@ void AxisMonitoring::finish_job() noexcept {
       // pass (blending) is done when the waiting command takes over (command_buffer.cpp).
       if (a.job_.table.generation_ended() && !a.job_.passing() &&
           a.monitors_.in_target_position()) {
+        a.note_event();
         if (own) a.channel_.answer_current(CommandState::kDone);
         a.job_.clear();
       }
@@ -217,12 +230,16 @@ void AxisMonitoring::finish_job() noexcept {
     case JobKind::kHalt:
     case JobKind::kStop:
       if (a.job_.table.generation_ended()) {
+        a.note_event();
         if (own) a.channel_.answer_current(CommandState::kDone);
         a.job_.clear();
       }
       break;
     case JobKind::kEmergencyStop:
-      if (a.job_.table.generation_ended()) a.job_.clear();
+      if (a.job_.table.generation_ended()) {
+        a.note_event();
+        a.job_.clear();
+      }
       break;
   }
 }
@@ -254,6 +271,7 @@ void AxisMotion::generate_set_values(std::span<const AxisSnapshot> snapshots) no
       a.set_jerk_ = a.job_.table.jerk();
       break;
     case SetValueSource::kExternalAbsolute: {
+      a.note_event();  // the generator may end
       const ExternalSetpoint::Step step =
           a.stack_.external.take(a.channel_.ref().PlcToNc, a.cycle_time_);
       a.base_ = step.state;
@@ -271,6 +289,7 @@ void AxisMotion::generate_set_values(std::span<const AxisSnapshot> snapshots) no
       break;
     }
     case SetValueSource::kHomingJob:
+      a.note_event();  // the homing's steps (set_homed(), its end)
       AxisHoming(a).run_homing();
       break;
     case SetValueSource::kHold:
@@ -290,6 +309,7 @@ void AxisMotion::generate_set_values(std::span<const AxisSnapshot> snapshots) no
     a.set_ = KinematicState{a.base_.p + a.stack_.held(), a.base_.v, a.base_.a};
     return;
   }
+  a.note_event();  // a compensation or the external generation may start or end here
   const BasicPath path = a.basic_path();
   SuperpositionStack::Basic basic;
   basic.state = a.base_;
