@@ -201,9 +201,15 @@ void AxisMonitoring::finish_job() noexcept {
   AxisCore& a = s_;  // held in a register: no reload of s_ after each store
   // A job answers Done only while it is the command the axis executes and still runs: a job
   // without a number of its own (a slave decoupled in motion goes on with its master's plan)
-  // must not answer CmdNo, which may be a command already answered (fuzz finding K12).
-  const bool own = a.channel_.runs(a.job_.number());
-  if (a.homing_.finished()) {
+  // must not answer CmdNo, which may be a command already answered (fuzz finding K12). Asked
+  // as the cycle's monitors left the channel: before a homing's Done, else when a job ends
+  // (nothing between here and there answers).
+  const bool homing_done = a.homing_.finished();
+  const bool own_before_homing = homing_done && a.channel_.runs(a.job_.number());
+  const auto own = [&a, homing_done, own_before_homing]() noexcept {
+    return homing_done ? own_before_homing : a.channel_.runs(a.job_.number());
+  };
+  if (homing_done) {
     a.note_event();
     a.channel_.answer_current(CommandState::kDone);
     a.homing_.clear();
@@ -218,7 +224,7 @@ void AxisMonitoring::finish_job() noexcept {
       if (a.job_.table.generation_ended() && !a.job_.passing() &&
           a.monitors_.in_target_position()) {
         a.note_event();
-        if (own) a.channel_.answer_current(CommandState::kDone);
+        if (own()) a.channel_.answer_current(CommandState::kDone);
         a.job_.clear();
       }
       break;
@@ -231,7 +237,7 @@ void AxisMonitoring::finish_job() noexcept {
     case JobKind::kStop:
       if (a.job_.table.generation_ended()) {
         a.note_event();
-        if (own) a.channel_.answer_current(CommandState::kDone);
+        if (own()) a.channel_.answer_current(CommandState::kDone);
         a.job_.clear();
       }
       break;
