@@ -1,16 +1,19 @@
-// The phases of the NC cycle for one axis (the kernel runs each over all axes), and the two parts
-// they call in every cycle, kept in this file so that they inline into the phases: AxisMotion (set
-// values, position control, drive) and AxisMonitoring (enables, monitors, job completion) (SPEC
-// A3, A4, A6).
+// The phases of the NC cycle for one axis (the kernel runs each over all axes), the NC→PLC image
+// of phase (f) (SPEC A7), and the two parts they call in every cycle, kept in this file so that
+// they inline into the phases: AxisMotion (set values, position control, drive) and
+// AxisMonitoring (enables, monitors, job completion) (SPEC A3, A4, A6). run_cycle_alone() is
+// all of one axis's cycle in one function (docs/performance.md "Fourth pass").
 #include "axis/servo_axis.hpp"
 
 #include <cmath>
+#include <cstdlib>
 
 #include "axis/axis_commands.hpp"
 #include "axis/axis_monitoring.hpp"
 #include "axis/axis_motion.hpp"
 #include "axis/buffered_commands.hpp"
 #include "axis/group_errors.hpp"
+#include "axis/nc_to_plc.hpp"
 #include "axis/online_change.hpp"
 #include "axis/slave_coupling.hpp"
 #include "homing/axis_homing.hpp"
@@ -57,6 +60,16 @@ void ServoAxis::phase_commands(CouplingPort& port) noexcept {
   }
 }
 
+// Flattened: the phases and their parts in this file inline into one function, so the steady
+// path of an axis's cycle is one body (docs/performance.md "Fourth pass": 68 instructions per
+// axis-cycle fewer than five calls).
+[[gnu::flatten]] void ServoAxis::run_cycle_alone(CouplingPort& port, AxisSnapshot& snapshot,
+                                                 std::span<const AxisSnapshot> snapshots,
+                                                 uint64_t cycle_counter) noexcept {
+  phase_commands(port);
+  run_alone(snapshot, snapshots, cycle_counter);
+}
+
 void ServoAxis::phase_set_values(AxisSnapshot& snapshot,
                                  std::span<const AxisSnapshot> snapshots) noexcept {
   if (two_speed_) return two_speed_->phase_set_values(snapshot);
@@ -87,6 +100,70 @@ void ServoAxis::phase_set_values(AxisSnapshot& snapshot,
   // C8: the filtered actual values instead (error_propagation.cpp); without slaves and a filter
   // running it has nothing to do.
   if (slave_count_ != 0 || actual_filter_.active) GroupErrors(*this).publish_for_slaves(snapshot);
+}
+
+// Phase (f): the NC→PLC image; what only events change comes from image_ (publish.cpp).
+void ServoAxis::phase_publish(uint64_t cycle_counter) noexcept {
+  if (two_speed_) return two_speed_->phase_publish(cycle_counter, static_cast<int32_t>(index_));
+  plc::NCTOPLC_AXIS_REF& out = channel_.ref().NcToPlc;
+  if (events_) {
+    // Something the image shows may have changed since the last publish (note_event()).
+    events_ = false;
+    image_ = event_image(*this);
+    out.CoupleState = image_.couple_state;
+    out.CompensationDistance = stack_.compensation.done();  // travel-relative, as D
+    out.CompensationLength = stack_.compensation.length();
+    out.CompensationVelocityDiff = stack_.compensation.velocity_diff();
+  }
+#ifdef NCSDK_CHECK_EVENT_IMAGE
+  // A check build (-DNCSDK_CHECK_EVENT_IMAGE): a missed note_event() stops the program here.
+  if (!(image_ == event_image(*this))) std::abort();
+#endif
+  const double actual = drive_.measured_position();
+  const bool enabled = channel_.controller_enabled();
+  const bool error = channel_.has_error();
+
+  const KinematicState& command = drive_command();  // d: the set values phase (d) controls to
+  out.SetPos = command.p;
+  out.SetVelo = command.v;
+  out.SetAcc = command.a;
+  out.SetJerk = set_jerk_;
+  out.ActPos = actual;
+  out.ActVelo = drive_.velocity();
+  out.ActAcc = drive_.acceleration();
+  out.PosDiff = command.p - actual;
+  out.ModuloActPos = modulo_position(actual, modulo_factor_);
+  out.ModuloSetPos = modulo_position(command.p, modulo_factor_);
+  out.TargetPos = target_;
+  out.TargetVelo = target_velocity();
+  channel_.publish(static_cast<int32_t>(index_));
+  out.GearRatio = slave_link_.coupled ? slave_link_.factor : 0.0;
+  out.CycleCounter = static_cast<uint32_t>(cycle_counter);
+
+  // Constant velocity: a velocity job at its level, or the cruise phase of a positioning.
+  const JobKind kind = image_.job_kind;
+  const bool constant_velocity =
+      (kind == JobKind::kVelocity && job_.table.velocity_reached()) ||
+      (kind == JobKind::kPosition && !job_.table.generation_ended() && set_.v != 0.0 &&
+       std::abs(set_.a) <= image_.constant_acceleration && set_jerk_ == 0.0);
+
+  uint32_t word = image_.state_bits;
+  set_state_bit(word, plc::kStateOperational, enabled && !error);
+  set_state_bit(word, plc::kStateNotMoving, std::abs(drive_.velocity()) < standstill_window_);
+  set_state_bit(word, plc::kStateInPositionArea, monitors_.in_position_area());
+  set_state_bit(word, plc::kStateInTargetPosition, monitors_.in_target_position());
+  set_state_bit(word, plc::kStatePositiveDirection, set_.v > 0.0);
+  set_state_bit(word, plc::kStateNegativeDirection, set_.v < 0.0);
+  set_state_bit(word, plc::kStateConstantVelocity, constant_velocity);
+  set_state_bit(word, plc::kStateSoftLimitMinExceeded, monitors_.below_min(actual));
+  set_state_bit(word, plc::kStateSoftLimitMaxExceeded, monitors_.above_max(actual));
+  set_state_bit(word, plc::kStateError, error);
+  out.StateDWord = word;
+
+  // PLCopen state: ErrorStop and Disabled before the image's.
+  out.AxisState = error      ? static_cast<uint32_t>(plc::AxisState::kErrorStop)
+                  : !enabled ? static_cast<uint32_t>(plc::AxisState::kDisabled)
+                             : image_.axis_state;
 }
 
 void ServoAxis::phase_drive_command(const KinematicState& drive, ErrorCode stop,
