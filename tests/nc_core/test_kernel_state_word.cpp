@@ -166,22 +166,38 @@ TEST_CASE("The kept image equals its recomputation through every kind of event",
   r.post(3, kt::home(plc::MC_DefaultHoming));
   r.home_cycles(6000);
   CHECK(kt::bit(r.at(3), plc::kStateHomed));
-  // Coupling: A1 follows A0; the master moves; the slave loses its feed enable while moving (its
-  // error, DELAYED: bit 6, then the group reaction on A0); reset both; MC_GearOut.
-  r.act(1, gr::gear_in(0, 1.0), 2);
-  CHECK(r.at(1).NcToPlc.CoupleState == static_cast<uint32_t>(plc::CoupleState::kSlave));
-  CHECK(r.at(0).NcToPlc.CoupleState == static_cast<uint32_t>(plc::CoupleState::kMaster));
-  r.act(0, kt::move_absolute(0.0, 1000.0), 300);
-  kt::set_enables(r.at(1), true, true, false);
-  r.run(200);
-  CHECK(r.at(1).NcToPlc.ErrorCode != 0);
-  CHECK(r.at(0).NcToPlc.ErrorCode != 0);
-  kt::set_enables(r.at(1), true);
-  r.act(0, kt::simple(plc::CommandType::kReset), 2);
-  r.act(1, kt::simple(plc::CommandType::kReset), 2);
-  r.act(1, gr::gear_out(), 5);
-  r.act(1, gr::gear_out(), 5);
-  CHECK(r.at(0).NcToPlc.CoupleState == static_cast<uint32_t>(plc::CoupleState::kSingle));
+  // Couplings, each with a master before and after its slave in the axes' order (a master
+  // whose commands phase runs first and one whose runs last in the cycle the link changes): A1
+  // follows the master, which moves; the slave loses its feed enable while moving (its error,
+  // DELAYED: bit 6, then the group reaction on the master); reset both; MC_GearOut of the slave
+  // that left on its error. Then A2 follows A3 and is decoupled at rest.
+  for (const std::size_t master : {std::size_t{0}, std::size_t{3}}) {
+    r.act(1, gr::gear_in(master, 1.0), 2);
+    CHECK(r.at(1).NcToPlc.CoupleState == static_cast<uint32_t>(plc::CoupleState::kSlave));
+    CHECK(r.at(master).NcToPlc.CoupleState == static_cast<uint32_t>(plc::CoupleState::kMaster));
+    r.act(master, kt::move_relative(-400.0, 1000.0), 300);
+    kt::set_enables(r.at(1), true, true, false);
+    r.run(200);
+    CHECK(r.at(1).NcToPlc.ErrorCode != 0);
+    CHECK(r.at(master).NcToPlc.ErrorCode != 0);
+    kt::set_enables(r.at(1), true);
+    r.act(master, kt::simple(plc::CommandType::kReset), 2);
+    r.act(1, kt::simple(plc::CommandType::kReset), 2);
+    r.act(1, gr::gear_out(), 5);
+    CHECK(r.at(master).NcToPlc.CoupleState == static_cast<uint32_t>(plc::CoupleState::kSingle));
+  }
+  r.run(1000);  // both at rest (MC_GearIn's precondition)
+  r.act(2, gr::gear_in(3, 1.0), 2);
+  CHECK(r.at(3).NcToPlc.CoupleState == static_cast<uint32_t>(plc::CoupleState::kMaster));
+  r.act(2, gr::gear_out(), 2);
+  CHECK(r.at(3).NcToPlc.CoupleState == static_cast<uint32_t>(plc::CoupleState::kSingle));
+  // A buffered move behind a running one (the waiting command takes over in phase a).
+  r.post(0, kt::move_absolute(600.0, 1000.0));
+  r.run(10);
+  plc::Command buffered = kt::move_absolute(100.0, 1000.0);
+  buffered.buffer_mode = plc::MC_Buffered;
+  const uint16_t next = r.act(0, buffered, 3000);
+  CHECK(r.answer(0, next).state == plc::CommandState::kDone);
   // Errors: the software limit during motion, reset; the controller enable lost while moving,
   // back, reset.
   r.act(0, kt::move_velocity(2000.0, 1), 3000);
