@@ -98,8 +98,7 @@ void Kernel::cycle() noexcept {
       if (i + kPrefetchAhead < n) {
         detail::prefetch_cycle_data(*axes_[i + kPrefetchAhead], snapshots_[i + kPrefetchAhead]);
       }
-      axes_[i]->phase_commands(port);
-      axes_[i]->run_alone(snapshots_[i], snapshots_, counter);
+      axes_[i]->run_cycle_alone(port, snapshots_[i], snapshots_, counter);
     }
   } else {
     // (a) commands of every axis first: a coupling command reads other axes and changes the

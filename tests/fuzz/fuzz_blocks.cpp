@@ -553,6 +553,11 @@ struct Program {
         watches[i].follow_cyclic(&axes[a.dyn_edge_master]->NcToPlc, a.gear_dyn.command_number(),
                                  a.dyn_edge_bound);
       }
+      // The image kept between events (StateDWord bits, AxisState, CoupleState, compensation
+      // values) equals its full recomputation (docs/performance.md "Fourth pass").
+      if (!kernel.published_image_consistent(i)) {
+        fuzz::fail("the kept image differs from its recomputation (a missed note_event())");
+      }
       if (two_speed_images[i] != nullptr) {
         if (const char* broken = fuzz::broken_two_speed_image(*two_speed_images[i])) {
           fuzz::fail(broken);

@@ -10,6 +10,7 @@ using plc::CommandState;
 
 void AxisCore::accept(JobKind kind, uint16_t number, const Profile& profile, double target,
                       double target_velocity, const Limits& limits) noexcept {
+  note_event();
   // A running homing is replaced as a job would be (MC_Stop aborts it; Homed stays as it is).
   const uint16_t running =
       job_.active() ? job_.number() : (homing_.active() ? homing_.number() : 0);
@@ -35,6 +36,7 @@ void AxisCore::accept(JobKind kind, uint16_t number, const Profile& profile, dou
 
 void AxisCore::raise_error(ErrorCode code, bool own) noexcept {
   if (!channel_.raise(code)) return;  // the first error stays until reset
+  note_event();
   // The motion the error ramp takes over: a homing's stays readable after homing_.clear().
   const MasterJob& running = running_motion();
   error_event_ = true;

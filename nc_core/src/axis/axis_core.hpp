@@ -48,6 +48,27 @@ struct BasicPath {
   double target_velocity = 0.0;
 };
 
+struct AxisCore;
+
+// What phase (f) publishes that only events change (publish.cpp): the StateDWord bits of the job,
+// the homing, MC_Stop's lock and "has been stopped", the coupling, the superpositions and the C7
+// delay; the AxisState with the controller enabled and no error; CoupleState; and what the
+// constant-velocity bit needs of the job. AxisCore keeps one, renewed in the publish after
+// note_event(); event_image() computes it in full (the kept one must always equal it: the tests
+// and the fuzz watch compare the two every cycle, KernelAxes::published_image_consistent).
+struct EventImage {
+  uint32_t state_bits = 0;
+  uint32_t axis_state = 0;  // plc::AxisState while enabled and without error
+  uint32_t couple_state = 0;
+  JobKind job_kind = JobKind::kNone;
+  double constant_acceleration = 0.0;  // |SetAcc| up to this counts as constant velocity
+  bool operator==(const EventImage&) const noexcept = default;
+};
+EventImage event_image(const AxisCore& a) noexcept;
+// The kept image is event_image() and the published NcToPlc shows it (the check; a two-speed
+// axis, which publishes in full, always passes). After a cycle, before the PLC writes PlcToNc.
+bool image_consistent(const AxisCore& a) noexcept;
+
 struct AxisCore {
   // `scratch`: the kernel's planning profile, shared by all its axes (one plans at a time).
   AxisCore(const AxisConfig& config, double cycle_time, std::size_t index, Profile& scratch)
@@ -76,11 +97,14 @@ struct AxisCore {
   KinematicState basic_state() const noexcept { return stack_.basic_state(base_, set_); }
   // A job planned from set_ starts: SuperpositionStack::fold(), and the basic motion is set_.
   void fold_superpositions(plc::CommandState state, ErrorCode code = ErrorCode::kNone) noexcept {
+    note_event();
     stack_.fold(channel_, state, code);
     base_ = set_;
   }
   // Reset, or the controller enable gone: the external generation is switched off at once.
   void end_external_generation() noexcept {
+    if (!stack_.external.taking()) return;  // nothing to end (end_external() would do nothing)
+    note_event();
     if (stack_.end_external()) base_ = KinematicState{set_.p, 0.0, 0.0};
   }
 
@@ -109,6 +133,7 @@ struct AxisCore {
   double drive_offset_ = 0.0;
   double set_jerk_ = 0.0;
   double previous_set_position_ = 0.0;
+  EventImage image_{};   // kept: see EventImage
   double target_ = 0.0;  // end position of the last positioning / stop; window monitors use it
   double hand_velocity_ = 0.0;  // push_by_hand(), mm/s
   uint32_t slave_count_ = 0;    // axes coupled to this one as their master
@@ -126,6 +151,7 @@ struct AxisCore {
   bool enable_seen_ = false;  // the controller enable of the last check_enables()
   bool group_ready_ = false;  // see set_group_ready()
   bool by_hand_ = false;      // case 2 in force (follows_by_hand() latched)
+  bool events_ = true;        // an event since image_ was computed (note_event())
   // C7 / C8 (error_propagation.cpp), the coupling link and the homing: a steady cycle reads only
   // the flag each keeps first, so they follow the members above in the order of their size.
   PropagationDelay propagation_{};
@@ -136,6 +162,10 @@ struct AxisCore {
   KinematicState drive_command_{};
   BasicPath slave_path_{};  // while coupled: the master's path of this cycle, transformed
 
+  // Something EventImage shows may have changed (a command, an error, a job's end, a coupling,
+  // a superposition, the C7 delay, …): the next publish computes the image anew. Called where
+  // those change; a call too many costs one recomputation, one too few a stale image.
+  void note_event() noexcept { events_ = true; }
   bool hli_target() const noexcept {
     return hli_role_ == plc::CoupleState::kSlave || hli_role_ == plc::CoupleState::kMasterAndSlave;
   }
@@ -152,6 +182,7 @@ struct AxisCore {
     return job_.active() ? job_.goal.target_velocity() : 0.0;
   }
   void set_homed(bool homed) noexcept {
+    note_event();
     homed_ = homed;
     monitors_.set_referenced(homed);
   }

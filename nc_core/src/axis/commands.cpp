@@ -41,6 +41,7 @@ ErrorCode check_dynamic(double value, ErrorCode code) noexcept {
 void AxisCommands::drain(CouplingPort& port) noexcept {
   plc::CommandMailbox& mailbox = s_.channel_.ref().Mailbox;
   plc::Command command;
+  s_.note_event();  // any command may change what publish shows
   while (mailbox.take(command))
     handle(command, port);
 }

@@ -80,6 +80,7 @@ bool SlaveCoupling::couple_new(const plc::Command& command, uint32_t master_inde
   if (!port.graph.couple(s_.index_, master_index)) return false;  // not reached
   AxisCore& master = port.axes[master_index]->core();
   ++master.slave_count_;
+  master.note_event();  // its CoupleState
   const uint16_t running = s_.job_.active() ? s_.job_.number() : 0;
   s_.slave_link_.couple(master_index, command.number, command.ratio, s_.set_.p, master.set_.p);
   // A held offset of a compensation that ended in the last cycle is in s_.set_.p, so in the offset.
@@ -158,6 +159,7 @@ ErrorCode SlaveCoupling::gear_out(const plc::Command& command, CouplingPort& por
   port.graph.decouple(s_.index_);
   AxisCore& master = port.axes[s_.slave_link_.master]->core();
   --master.slave_count_;
+  master.note_event();  // its CoupleState
   s_.slave_link_.coupled = false;
   // The coupling command has ended.
   if (s_.channel_.runs(s_.slave_link_.command)) s_.channel_.answer_current(CommandState::kDone);
@@ -189,7 +191,9 @@ ErrorCode SlaveCoupling::gear_out(const plc::Command& command, CouplingPort& por
 ErrorCode SlaveCoupling::release_detached(const plc::Command& command,
                                           CouplingPort& port) noexcept {
   port.graph.decouple(s_.index_);
-  --port.axes[s_.slave_link_.master]->core().slave_count_;
+  AxisCore& master = port.axes[s_.slave_link_.master]->core();
+  --master.slave_count_;
+  master.note_event();  // its CoupleState
   s_.slave_link_.detached = false;
   if (s_.channel_.runs(s_.slave_link_.command)) s_.channel_.answer_current(CommandState::kDone);
   s_.channel_.answer(command.number, CommandState::kDone);

@@ -12,9 +12,11 @@
 // functions.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <vector>
 
+#include "axis/rounding.hpp"
 #include "nc_core/axis_config.hpp"
 
 namespace nc::detail {
@@ -63,5 +65,35 @@ class Drive {
   double velocity_ = 0.0;
   double acceleration_ = 0.0;
 };
+
+// Inline: the drive phase runs them for every axis in every cycle.
+inline double Drive::quantise(double p) const noexcept {
+  if (increment_ <= 0.0) return p;
+  return round_exact(p / increment_) * increment_;
+}
+
+inline void Drive::step(double command, bool enabled) noexcept {
+  double input = enabled ? command : 0.0;
+  if (!delay_line_.empty()) {
+    const double delayed = delay_line_[delay_head_];
+    delay_line_[delay_head_] = input;
+    delay_head_ = delay_head_ + 1 == delay_line_.size() ? 0 : delay_head_ + 1;
+    input = delayed;
+  }
+  if (max_velocity_ > 0.0) input = std::clamp(input, -max_velocity_, max_velocity_);
+
+  const double before = velocity_;
+  if (lag_) {
+    // Exact solution of v' = (u - v)/tau over one cycle with u held constant.
+    const double gap = before - input;
+    position_ += input * cycle_time_ + gap * tau_ * (1.0 - decay_);
+    velocity_ = input + gap * decay_;
+  } else {
+    position_ += input * cycle_time_;
+    velocity_ = input;
+  }
+  acceleration_ = (velocity_ - before) / cycle_time_;
+  measured_ = offset_ == 0.0 ? quantise(position_) : quantise(position_) + offset_;
+}
 
 }  // namespace nc::detail

@@ -86,6 +86,7 @@ ErrorCode GroupErrors::push_by_hand(double velocity) noexcept {
   if (std::abs(velocity) > s_.config_.max_velocity) return ErrorCode::kVelocityNotAllowed;
   if (s_.channel_.controller_enabled()) return ErrorCode::kPushByHandControllerEnabled;
   s_.hand_velocity_ = velocity;
+  s_.note_event();
   return ErrorCode::kNone;
 }
 

@@ -15,6 +15,7 @@
 // Cycle functions only: noexcept, no allocation.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 
@@ -113,6 +114,9 @@ class JobTable {
   // The next cycle's set values of a job of `kind` (`final`: this table ends the job). Call once
   // per cycle.
   KinematicState advance(JobKind kind, bool final, double cycle_time) noexcept;
+  // A sample time this close below the duration counts as the end: k·T and a planned duration
+  // that are equal on paper may differ in the last bits.
+  static constexpr double kEndTolerance = 1e-9;  // s
   double jerk() const noexcept { return jerk_; }
   // The set state output last (the table's start state right after install()).
   KinematicState state() const noexcept { return state_; }
@@ -133,5 +137,44 @@ class JobTable {
   Profile profile_{};        // a cycle reads its header (first) and one segment, not all of it
   DecouplingChain chain_{};  // empty except after an online decoupling, until the next install
 };
+
+// Inline: the set-value phase of every moving axis calls it in every cycle.
+inline KinematicState JobTable::advance(JobKind kind, bool final, double cycle_time) noexcept {
+  const auto passing = [&]() noexcept {
+    return kind == JobKind::kPosition && profile_.holds_velocity();
+  };
+  if (ended_ && !passing()) {
+    jerk_ = 0.0;
+    state_ = chain_.state(profile_.final_state());
+    return state_;
+  }
+  ++k_;
+  const double t = sample_time(cycle_time);
+  const double end = profile_.duration();
+  const bool at_end = t >= end - kEndTolerance * std::max(1.0, end);
+  if (kind == JobKind::kVelocity) {
+    // The hold goes on past the end of the profile: at() extrapolates it. A hold at 0 (override
+    // 0) is not "reached": InVelocity means moving at the commanded level.
+    if (at_end) reached_ = profile_.final_state().v != 0.0;
+    double jerk = 0.0;
+    const KinematicState sample = profile_.at(t, jerk);
+    jerk_ = at_end ? 0.0 : chain_.velocity(jerk);
+    state_ = chain_.state(sample);
+    return state_;
+  }
+  if (at_end) {
+    // A rest for override 0 holds its end but does not end the job.
+    ended_ = final;
+    jerk_ = 0.0;
+    // A pass goes on at its velocity.
+    state_ = chain_.state(passing() ? profile_.at(t) : profile_.final_state());
+    return state_;
+  }
+  double jerk = 0.0;
+  const KinematicState sample = profile_.at(t, jerk);  // one search for p, v, a and j
+  jerk_ = chain_.velocity(jerk);
+  state_ = chain_.state(sample);
+  return state_;
+}
 
 }  // namespace nc::detail

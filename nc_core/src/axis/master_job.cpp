@@ -6,9 +6,7 @@
 namespace nc::detail {
 
 namespace {
-// A sample time this close below the duration counts as the end: k·T and a planned duration
-// that are equal on paper may differ in the last bits.
-constexpr double kEndTolerance = 1e-9;  // s
+constexpr double kEndTolerance = JobTable::kEndTolerance;
 // An acceleration this small is "a = 0" when looking for a held velocity level (the planner sets
 // the acceleration at the end of a velocity change exactly; this absorbs the sign of -0.0 and
 // the rounding of a sampled start state).
@@ -197,44 +195,6 @@ bool MasterJob::in_brake_phase(double cycle_time) const noexcept {
   if (table.generation_ended()) return true;
   const double t = table.sample_time(cycle_time);
   return t >= brake_start_ - kEndTolerance * std::max(1.0, brake_start_);
-}
-
-KinematicState JobTable::advance(JobKind kind, bool final, double cycle_time) noexcept {
-  const auto passing = [&]() noexcept {
-    return kind == JobKind::kPosition && profile_.holds_velocity();
-  };
-  if (ended_ && !passing()) {
-    jerk_ = 0.0;
-    state_ = chain_.state(profile_.final_state());
-    return state_;
-  }
-  ++k_;
-  const double t = sample_time(cycle_time);
-  const double end = profile_.duration();
-  const bool at_end = t >= end - kEndTolerance * std::max(1.0, end);
-  if (kind == JobKind::kVelocity) {
-    // The hold goes on past the end of the profile: at() extrapolates it. A hold at 0 (override
-    // 0) is not "reached": InVelocity means moving at the commanded level.
-    if (at_end) reached_ = profile_.final_state().v != 0.0;
-    double jerk = 0.0;
-    const KinematicState sample = profile_.at(t, jerk);
-    jerk_ = at_end ? 0.0 : chain_.velocity(jerk);
-    state_ = chain_.state(sample);
-    return state_;
-  }
-  if (at_end) {
-    // A rest for override 0 holds its end but does not end the job.
-    ended_ = final;
-    jerk_ = 0.0;
-    // A pass goes on at its velocity.
-    state_ = chain_.state(passing() ? profile_.at(t) : profile_.final_state());
-    return state_;
-  }
-  double jerk = 0.0;
-  const KinematicState sample = profile_.at(t, jerk);  // one search for p, v, a and j
-  jerk_ = chain_.velocity(jerk);
-  state_ = chain_.state(sample);
-  return state_;
 }
 
 }  // namespace nc::detail

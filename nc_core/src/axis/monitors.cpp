@@ -33,6 +33,7 @@ void Monitors::configure(const AxisConfig& config, double cycle_time) noexcept {
   max_enabled_ = config.sw_limit_max_enabled;
   min_ = config.sw_limit_min;
   max_ = config.sw_limit_max;
+  set_bounds();
 }
 
 }  // namespace nc::detail

@@ -16,6 +16,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include "nc_core/axis_config.hpp"
 
@@ -38,12 +39,16 @@ class Monitors {
 
   // Software limits on a position (true: beyond an enabled limit). They count only while the
   // axis is referenced (homed): an axis that has not homed does not know where its limits are.
-  bool below_min(double p) const noexcept { return referenced_ && min_enabled_ && p < min_; }
-  bool above_max(double p) const noexcept { return referenced_ && max_enabled_ && p > max_; }
+  // (One comparison each: the bounds in force are ±inf while a limit does not count.)
+  bool below_min(double p) const noexcept { return p < low_; }
+  bool above_max(double p) const noexcept { return p > high_; }
   // The same, at or beyond (a continuous start standing on the limit).
   bool at_or_below_min(double p) const noexcept { return referenced_ && min_enabled_ && p <= min_; }
   bool at_or_above_max(double p) const noexcept { return referenced_ && max_enabled_ && p >= max_; }
-  void set_referenced(bool referenced) noexcept { referenced_ = referenced; }
+  void set_referenced(bool referenced) noexcept {
+    referenced_ = referenced;
+    set_bounds();
+  }
 
  private:
   // The flags together: an axis's hot members are packed (docs/performance.md "Kernel cycle").
@@ -68,6 +73,14 @@ class Monitors {
 
   double min_ = 0.0;
   double max_ = 0.0;
+  // The software limits in force: min_ / max_ while enabled and referenced, else -inf / +inf.
+  double low_ = -std::numeric_limits<double>::infinity();
+  double high_ = std::numeric_limits<double>::infinity();
+
+  void set_bounds() noexcept {
+    low_ = referenced_ && min_enabled_ ? min_ : -std::numeric_limits<double>::infinity();
+    high_ = referenced_ && max_enabled_ ? max_ : std::numeric_limits<double>::infinity();
+  }
 };
 
 // Cycle functions, inline: the monitor phase calls them for every axis in every cycle.

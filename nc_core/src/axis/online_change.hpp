@@ -45,12 +45,15 @@ class OnlineChange : public AxisPart {
                        (activation.direction * (s_.set_.p - activation.position) >= 0.0 &&
                         activation.direction * s_.set_.v > 0.0);
       if (due && !s_.job_.in_brake_phase(s_.cycle_time_)) {
+        s_.note_event();
         activation.armed = false;
         replanned = activate_velocity(activation.velocity);
       }
     }
-    if (!replanned && s_.job_.online.override_value() != s_.job_.online.handled_override())
+    if (!replanned && s_.job_.online.override_value() != s_.job_.online.handled_override()) {
+      s_.note_event();
       apply_override();
+    }
   }
   // A positioning / velocity job planned from set_ with the override in force, then accept().
   ErrorCode start_positioning(uint16_t number, double target, const Limits& limits) noexcept;

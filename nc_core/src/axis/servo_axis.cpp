@@ -1,16 +1,19 @@
-// The phases of the NC cycle for one axis (the kernel runs each over all axes), and the two parts
-// they call in every cycle, kept in this file so that they inline into the phases: AxisMotion (set
-// values, position control, drive) and AxisMonitoring (enables, monitors, job completion) (SPEC
-// A3, A4, A6).
+// The phases of the NC cycle for one axis (the kernel runs each over all axes), the NC→PLC image
+// of phase (f) (SPEC A7), and the two parts they call in every cycle, kept in this file so that
+// they inline into the phases: AxisMotion (set values, position control, drive) and
+// AxisMonitoring (enables, monitors, job completion) (SPEC A3, A4, A6). run_cycle_alone() is
+// all of one axis's cycle in one function (docs/performance.md "Fourth pass").
 #include "axis/servo_axis.hpp"
 
 #include <cmath>
+#include <cstdlib>
 
 #include "axis/axis_commands.hpp"
 #include "axis/axis_monitoring.hpp"
 #include "axis/axis_motion.hpp"
 #include "axis/buffered_commands.hpp"
 #include "axis/group_errors.hpp"
+#include "axis/nc_to_plc.hpp"
 #include "axis/online_change.hpp"
 #include "axis/slave_coupling.hpp"
 #include "homing/axis_homing.hpp"
@@ -48,10 +51,23 @@ void ServoAxis::phase_commands(CouplingPort& port) noexcept {
   AxisMonitoring(*this).check_enables();
   // command_buffer.cpp: a waiting command takes over; a pass left alone stops. Neither without
   // a waiting command or a pass.
-  if (buffer_.waiting || job_.passing()) BufferedCommands(*this).run_buffer(port);
+  if (buffer_.waiting || job_.passing()) {
+    note_event();
+    BufferedCommands(*this).run_buffer(port);
+  }
   if (job_.is_motion()) {
     OnlineChange(*this).run_online_functions();  // only a motion job has online functions
   }
+}
+
+// Flattened: the phases and their parts in this file inline into one function, so the steady
+// path of an axis's cycle is one body (docs/performance.md "Fourth pass": 68 instructions per
+// axis-cycle fewer than five calls).
+[[gnu::flatten]] void ServoAxis::run_cycle_alone(CouplingPort& port, AxisSnapshot& snapshot,
+                                                 std::span<const AxisSnapshot> snapshots,
+                                                 uint64_t cycle_counter) noexcept {
+  phase_commands(port);
+  run_alone(snapshot, snapshots, cycle_counter);
 }
 
 void ServoAxis::phase_set_values(AxisSnapshot& snapshot,
@@ -86,10 +102,75 @@ void ServoAxis::phase_set_values(AxisSnapshot& snapshot,
   if (slave_count_ != 0 || actual_filter_.active) GroupErrors(*this).publish_for_slaves(snapshot);
 }
 
+// Phase (f): the NC→PLC image; what only events change comes from image_ (publish.cpp).
+void ServoAxis::phase_publish(uint64_t cycle_counter) noexcept {
+  if (two_speed_) return two_speed_->phase_publish(cycle_counter, static_cast<int32_t>(index_));
+  plc::NCTOPLC_AXIS_REF& out = channel_.ref().NcToPlc;
+  if (events_) {
+    // Something the image shows may have changed since the last publish (note_event()).
+    events_ = false;
+    image_ = event_image(*this);
+    out.CoupleState = image_.couple_state;
+    out.CompensationDistance = stack_.compensation.done();  // travel-relative, as D
+    out.CompensationLength = stack_.compensation.length();
+    out.CompensationVelocityDiff = stack_.compensation.velocity_diff();
+  }
+#ifdef NCSDK_CHECK_EVENT_IMAGE
+  // A check build (-DNCSDK_CHECK_EVENT_IMAGE): a missed note_event() stops the program here.
+  if (!(image_ == event_image(*this))) std::abort();
+#endif
+  const double actual = drive_.measured_position();
+  const bool enabled = channel_.controller_enabled();
+  const bool error = channel_.has_error();
+
+  const KinematicState& command = drive_command();  // d: the set values phase (d) controls to
+  out.SetPos = command.p;
+  out.SetVelo = command.v;
+  out.SetAcc = command.a;
+  out.SetJerk = set_jerk_;
+  out.ActPos = actual;
+  out.ActVelo = drive_.velocity();
+  out.ActAcc = drive_.acceleration();
+  out.PosDiff = command.p - actual;
+  out.ModuloActPos = modulo_position(actual, modulo_factor_);
+  out.ModuloSetPos = modulo_position(command.p, modulo_factor_);
+  out.TargetPos = target_;
+  out.TargetVelo = target_velocity();
+  channel_.publish(static_cast<int32_t>(index_));
+  out.GearRatio = slave_link_.coupled ? slave_link_.factor : 0.0;
+  out.CycleCounter = static_cast<uint32_t>(cycle_counter);
+
+  // Constant velocity: a velocity job at its level, or the cruise phase of a positioning.
+  const JobKind kind = image_.job_kind;
+  const bool constant_velocity =
+      (kind == JobKind::kVelocity && job_.table.velocity_reached()) ||
+      (kind == JobKind::kPosition && !job_.table.generation_ended() && set_.v != 0.0 &&
+       std::abs(set_.a) <= image_.constant_acceleration && set_jerk_ == 0.0);
+
+  uint32_t word = image_.state_bits;
+  set_state_bit(word, plc::kStateOperational, enabled && !error);
+  set_state_bit(word, plc::kStateNotMoving, std::abs(drive_.velocity()) < standstill_window_);
+  set_state_bit(word, plc::kStateInPositionArea, monitors_.in_position_area());
+  set_state_bit(word, plc::kStateInTargetPosition, monitors_.in_target_position());
+  set_state_bit(word, plc::kStatePositiveDirection, set_.v > 0.0);
+  set_state_bit(word, plc::kStateNegativeDirection, set_.v < 0.0);
+  set_state_bit(word, plc::kStateConstantVelocity, constant_velocity);
+  set_state_bit(word, plc::kStateSoftLimitMinExceeded, monitors_.below_min(actual));
+  set_state_bit(word, plc::kStateSoftLimitMaxExceeded, monitors_.above_max(actual));
+  set_state_bit(word, plc::kStateError, error);
+  out.StateDWord = word;
+
+  // PLCopen state: ErrorStop and Disabled before the image's.
+  out.AxisState = error      ? static_cast<uint32_t>(plc::AxisState::kErrorStop)
+                  : !enabled ? static_cast<uint32_t>(plc::AxisState::kDisabled)
+                             : image_.axis_state;
+}
+
 void ServoAxis::phase_drive_command(const KinematicState& drive, ErrorCode stop,
                                     plc::CoupleState role) noexcept {
   if (two_speed_) return;  // never an HLI target (the stage refuses it, 0x4040): d = q
   if (stop != ErrorCode::kNone) raise_error(stop);
+  if (role != hli_role_) note_event();  // CoupleState, AxisState
   hli_role_ = role;
   drive_command_ = drive;
   drive_offset_ = drive.p - set_.p;
@@ -114,7 +195,12 @@ void ServoAxis::phase_monitors(AxisSnapshot& snapshot) noexcept {
   AxisMonitoring(*this).finish_job();
   snapshot.error = channel_.error();
   snapshot.error_event = error_event_;
-  snapshot.group_reaction_due = propagation_.pending && GroupErrors(*this).group_reaction_due();
+  if (propagation_.pending) {
+    note_event();  // the C7 delay runs (StateDWord bit 6) and ends here
+    snapshot.group_reaction_due = GroupErrors(*this).group_reaction_due();
+  } else {
+    snapshot.group_reaction_due = false;
+  }
   const uint32_t control = channel_.ref().PlcToNc.ControlDWord;
   snapshot.controller_enabled = plc::test_bit(control, plc::kControlEnable);
   snapshot.feed_enabled_plus = plc::test_bit(control, plc::kControlFeedEnablePlus);
@@ -135,10 +221,12 @@ void AxisMonitoring::check_enables() noexcept {
   a.enable_seen_ = enabled;
   if (a.slave_count_ == 0) {  // no group to follow this axis: never case 2 (follows_by_hand())
     GroupErrors(a).end_by_hand();
-  } else if (GroupErrors(a).update_by_hand()) {
-    return;  // C8 case 2: the group follows this master pushed by hand
+  } else {
+    a.note_event();
+    if (GroupErrors(a).update_by_hand()) return;  // C8 case 2: the group follows by hand
   }
   if (!enabled) {
+    a.note_event();
     // Losing the controller enable while a command runs is an axis error (enable_loss.cpp);
     // there is no ramp to run (the drive is off), so the job ends here and the set values follow
     // the actual position.
@@ -190,9 +278,16 @@ void AxisMonitoring::finish_job() noexcept {
   AxisCore& a = s_;  // held in a register: no reload of s_ after each store
   // A job answers Done only while it is the command the axis executes and still runs: a job
   // without a number of its own (a slave decoupled in motion goes on with its master's plan)
-  // must not answer CmdNo, which may be a command already answered (fuzz finding K12).
-  const bool own = a.channel_.runs(a.job_.number());
-  if (a.homing_.finished()) {
+  // must not answer CmdNo, which may be a command already answered (fuzz finding K12). Asked
+  // as the cycle's monitors left the channel: before a homing's Done, else when a job ends
+  // (nothing between here and there answers).
+  const bool homing_done = a.homing_.finished();
+  const bool own_before_homing = homing_done && a.channel_.runs(a.job_.number());
+  const auto own = [&a, homing_done, own_before_homing]() noexcept {
+    return homing_done ? own_before_homing : a.channel_.runs(a.job_.number());
+  };
+  if (homing_done) {
+    a.note_event();
     a.channel_.answer_current(CommandState::kDone);
     a.homing_.clear();
     a.target_ = a.set_.p;  // where the homing stopped: the windows watch it from now on
@@ -205,7 +300,8 @@ void AxisMonitoring::finish_job() noexcept {
       // pass (blending) is done when the waiting command takes over (command_buffer.cpp).
       if (a.job_.table.generation_ended() && !a.job_.passing() &&
           a.monitors_.in_target_position()) {
-        if (own) a.channel_.answer_current(CommandState::kDone);
+        a.note_event();
+        if (own()) a.channel_.answer_current(CommandState::kDone);
         a.job_.clear();
       }
       break;
@@ -217,12 +313,16 @@ void AxisMonitoring::finish_job() noexcept {
     case JobKind::kHalt:
     case JobKind::kStop:
       if (a.job_.table.generation_ended()) {
-        if (own) a.channel_.answer_current(CommandState::kDone);
+        a.note_event();
+        if (own()) a.channel_.answer_current(CommandState::kDone);
         a.job_.clear();
       }
       break;
     case JobKind::kEmergencyStop:
-      if (a.job_.table.generation_ended()) a.job_.clear();
+      if (a.job_.table.generation_ended()) {
+        a.note_event();
+        a.job_.clear();
+      }
       break;
   }
 }
@@ -254,6 +354,7 @@ void AxisMotion::generate_set_values(std::span<const AxisSnapshot> snapshots) no
       a.set_jerk_ = a.job_.table.jerk();
       break;
     case SetValueSource::kExternalAbsolute: {
+      a.note_event();  // the generator may end
       const ExternalSetpoint::Step step =
           a.stack_.external.take(a.channel_.ref().PlcToNc, a.cycle_time_);
       a.base_ = step.state;
@@ -271,6 +372,7 @@ void AxisMotion::generate_set_values(std::span<const AxisSnapshot> snapshots) no
       break;
     }
     case SetValueSource::kHomingJob:
+      a.note_event();  // the homing's steps (set_homed(), its end)
       AxisHoming(a).run_homing();
       break;
     case SetValueSource::kHold:
@@ -290,6 +392,7 @@ void AxisMotion::generate_set_values(std::span<const AxisSnapshot> snapshots) no
     a.set_ = KinematicState{a.base_.p + a.stack_.held(), a.base_.v, a.base_.a};
     return;
   }
+  a.note_event();  // a compensation or the external generation may start or end here
   const BasicPath path = a.basic_path();
   SuperpositionStack::Basic basic;
   basic.state = a.base_;

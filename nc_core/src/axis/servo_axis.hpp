@@ -68,6 +68,9 @@ class ServoAxis : private AxisCore {
     phase_monitors(snapshot);
     phase_publish(cycle_counter);
   }
+  // Phase (a), then run_alone(): the kernel's loop while no axis reads another, in one call.
+  void run_cycle_alone(CouplingPort& port, AxisSnapshot& snapshot,
+                       std::span<const AxisSnapshot> snapshots, uint64_t cycle_counter) noexcept;
 };
 
 // Asks the CPU for the cache lines from `from` to `from + bytes` (a hint: no effect on a value).
