@@ -7,13 +7,20 @@
 #      (`ncsdk_fuzz_timed` in tests/fuzz/CMakeLists.txt) run NCSDK_FUZZ_SECONDS (60 s) each from
 #      their seed corpus, and every target replays its kept inputs, so that a regression shows.
 # Exits non-zero when a build or a test fails. The last line sums up the three runs as
-# "run_tests: N passed, M failed". No benchmarks.
+# "run_tests: N passed, M failed". No benchmarks. Each step prints its wall and CPU seconds
+# ("time: ..."; CPU is user + sys of all its processes), so that a CI log shows where the time goes.
 set -uo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 jobs="$(nproc 2> /dev/null || echo 2)"
 
-bash "${root}/tools/setup.sh" || exit 1
+# phase_time <label>: the report format of the next `time` (bash keyword: the step's own processes).
+phase_time() {
+  TIMEFORMAT="time: $1 %R s wall, %U s user + %S s sys"
+}
+
+phase_time setup
+time bash "${root}/tools/setup.sh" || exit 1
 
 # run <label> <build dir> <cmake args…>: configure, build, test; sets result_<label>.
 run() {
@@ -44,35 +51,41 @@ result_release="not run"
 result_sanitize="not run"
 result_fuzz="not run"
 
-run release "${root}/build-tests-release" -DCMAKE_BUILD_TYPE=Release -DNCSDK_WERROR=ON || failed=1
+phase_time release
+time run release "${root}/build-tests-release" -DCMAKE_BUILD_TYPE=Release -DNCSDK_WERROR=ON || failed=1
 
-# The sanitizers need no optimisation beyond -O1 to keep their reports exact; -g1 gives the line
-# tables a report's stack needs (full -g made the slowest test files compile about 1.5x longer).
+# The sanitizers check every access and every operation at any optimisation level; -Og (rather than
+# -O1) compiles a test file about twice as fast and still runs the passes that UBSan's object-size
+# check needs (at -O0 that check finds nothing; docs/performance.md, "The test command's time").
+# -g1 gives the line tables a report's stack needs (full -g made the slowest test files compile
+# about 1.5x longer).
 # Warnings are not errors here: GCC's instrumentation gives false maybe-uninitialized warnings
 # inside libstdc++ (the Release build above holds the code to zero warnings).
-ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=0}" \
-UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}" \
+phase_time sanitize
+time ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=0}" \
+  UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}" \
   run sanitize "${root}/build-tests-sanitize" -DNCSDK_SANITIZE=ON -DNCSDK_WERROR=OFF \
   -DCMAKE_BUILD_TYPE=Debug \
-  "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g1" || failed=1
+  "-DCMAKE_CXX_FLAGS_DEBUG=-Og -g1" || failed=1
 
-# The fuzz build holds only the libraries (instrumented) and the three targets; its CTest file
-# lives in tests/fuzz. The targets run one at a time: each uses a whole core for its 60 s.
+# The fuzz build holds only the libraries (instrumented) and the three targets (not the ncsdk_run
+# runner, which no target uses); its CTest file lives in tests/fuzz. The targets run one at a time: each uses a whole core for its 60 s.
 fuzz_build="${root}/build-tests-fuzz"
 echo "=== fuzz: configure and build (${fuzz_build}) ==="
 if ! cmake -S "${root}" -B "${fuzz_build}" -DCMAKE_CXX_COMPILER=clang++-14 -DNCSDK_FUZZ=ON \
     -DNCSDK_BUILD_TESTS=OFF -DNCSDK_BUILD_SAMPLES=OFF -DNCSDK_BUILD_BENCHMARKS=OFF \
-    -DCMAKE_BUILD_TYPE=Release -DNCSDK_FUZZ_SECONDS="${NCSDK_FUZZ_SECONDS:-60}"; then
+    -DNCSDK_BUILD_RUNNER=OFF -DCMAKE_BUILD_TYPE=Release -DNCSDK_FUZZ_SECONDS="${NCSDK_FUZZ_SECONDS:-60}"; then
   result_fuzz="configure failed"
   failed=1
-elif ! cmake --build "${fuzz_build}" -j "${jobs}"; then
+elif phase_time fuzz-build && ! time cmake --build "${fuzz_build}" -j "${jobs}"; then
   result_fuzz="build failed"
   failed=1
 else
   echo "=== fuzz: ctest (each target ${NCSDK_FUZZ_SECONDS:-60} s) ==="
   fuzz_log="${fuzz_build}/ctest-summary.log"
   rm -f "${fuzz_build}"/tests/fuzz/work/*/artifacts/*  # only this run's findings are shown below
-  ctest --test-dir "${fuzz_build}/tests/fuzz" --output-on-failure -j 1 | tee "${fuzz_log}"
+  phase_time fuzz-ctest
+  time ctest --test-dir "${fuzz_build}/tests/fuzz" --output-on-failure -j 1 | tee "${fuzz_log}"
   [[ ${PIPESTATUS[0]} -eq 0 ]] || failed=1
   summary="$(grep -E '[0-9]+% tests passed' "${fuzz_log}" | tail -n1)"
   result_fuzz="${summary:-no ctest summary}"
