@@ -42,9 +42,9 @@ class Monitors {
   // (One comparison each: the bounds in force are ±inf while a limit does not count.)
   bool below_min(double p) const noexcept { return p < low_; }
   bool above_max(double p) const noexcept { return p > high_; }
-  // The same, at or beyond (a continuous start standing on the limit).
-  bool at_or_below_min(double p) const noexcept { return referenced_ && min_enabled_ && p <= min_; }
-  bool at_or_above_max(double p) const noexcept { return referenced_ && max_enabled_ && p >= max_; }
+  // The same, at or beyond (a continuous start standing on the limit; p is finite).
+  bool at_or_below_min(double p) const noexcept { return p <= low_; }
+  bool at_or_above_max(double p) const noexcept { return p >= high_; }
   void set_referenced(bool referenced) noexcept {
     referenced_ = referenced;
     set_bounds();
