@@ -303,3 +303,40 @@ TEST_CASE("a stop from just above A- holds the start's acceleration only up to i
     CHECK(prof.duration() == Approx(-start.v / start.a).epsilon(1e-12));
   }
 }
+
+// Fuzz finding P25 (main at cbe443a, CI's seed 1): a plan to rest (plan_position with v_end = 0)
+// from v = 1.57e11 mm/s to a target 2.26e11 mm ahead, A+ = 3.2e-5 against A- = J = 1.57e11. The
+// push holds A+ for 1.8e15 s before it would reach V, so the switch search began 2.6e7 s into
+// that hold, where the positions are 4e18 mm; the stop point's quartic model taken there was
+// solved down to the root (0.44 s) and returned without evaluating it again, with the far point's
+// rounding in it: the switch lay 250 mm (1.1e-9 of the target) before the stop's anchored start.
+// A model root is now returned unevaluated only where the model point's tolerance is within a few
+// times the root's: the switch is at the stop's start to its root tolerance (1e-13 of the
+// positions).
+TEST_CASE("a plan to rest whose switch search starts far out on a hold at a tiny A+ meets its stop",
+          "[profile][regression]") {
+  const KinematicState start{6.0738544773477918e-110, 156842099844.51761, 4.8122032964393445e-81};
+  const double target = 225561576580.51764;
+  const Limits l{214757049476.51764, 3.2499430545061044e-05, 156841959044.51764, 156842097020.0};
+  for (const bool passing : {false, true}) {
+    INFO((passing ? "with v_end = 0" : "to rest"));
+    const Profile prof =
+        passing ? nc::plan_position(start, target, 0.0, l) : nc::plan_position(start, target, l);
+    REQUIRE(prof.ok());
+    const profile_checks::Finding f =
+        profile_checks::check_position_profile(prof, start, target, l);
+    INFO(profile_checks::to_string(f));
+    CHECK(f.ok());
+    // The ramp to A+, the hold at A+ up to the switch, the stop's ramp to -A-, hold and ramp.
+    REQUIRE(prof.segment_count() == 5);
+    const nc::Segment& hold = prof.segment(1);
+    CHECK(hold.a == l.acceleration);
+    CHECK(hold.j == 0.0);
+    // The switch where the hold's end p + v t + A+ t² / 2 meets the stop's start (the old one
+    // 0.43814432248473167 s).
+    CHECK(hold.duration == Approx(0.43814432089217714).epsilon(1e-12));
+    const KinematicState end = profile_checks::advance(hold, hold.duration);
+    CHECK(std::fabs(end.p - prof.segment(2).p) <= 1e-13 * (2.0 * target));
+    CHECK(prof.duration() == Approx(2.4381443389016373).epsilon(1e-12));
+  }
+}

@@ -103,26 +103,31 @@ Profile finish_stop(const KinematicState& start, double target, double dir, cons
     const double jerk = push[i].j;
     // S(tau) - goal with its derivatives: p' = v, v' = a, a' = jerk along the push.
     const double jerk6 = jerk / 6.0;
-    double frame = 0.0;  // the stop's mirror sign at the last evaluation
+    double frame = 0.0;      // the stop's mirror sign at the last evaluation
+    double model_tol = 0.0;  // f's tolerance there
     auto fd = [&](double tau) {
       const double a_t = s.a + jerk * tau;
       const double v_t = s.v + tau * (s.a + (0.5 * jerk) * tau);
       const double p_t = s.p + tau * (s.v + tau * (0.5 * s.a + tau * jerk6));
       const detail::StopAlong d = detail::stop_point_along(v_t, a_t, jerk, stop_bounds);
       frame = d.frame;
-      return detail::RootPoint{p_t + d.distance - goal,
-                               d.d,
-                               d.dd,
-                               kRootTolerance * (std::abs(p_t) + std::abs(d.distance) + goal),
-                               d.d3,
-                               d.d4,
-                               d.quartic};
+      model_tol = kRootTolerance * (std::abs(p_t) + std::abs(d.distance) + goal);
+      return detail::RootPoint{
+          p_t + d.distance - goal, d.d, d.dd, model_tol, d.d3, d.d4, d.quartic};
     };
-    // Whether the stop at tau keeps the shape of the last quartic point (same mirror sign).
-    auto same = [&](double tau) {
+    // Whether the quartic model of the last point gives f at tau closely enough to return tau
+    // unevaluated: the stop there keeps the model's shape (same mirror sign), and the model's own
+    // error — its residual, up to half the tolerance where it was taken, and that point's
+    // rounding, a fiftieth of it — stays within about twice the tolerance at tau (where S = goal,
+    // so |D| = |goal - p|): 2e-13 of the positions. A model taken far beyond the root carries the
+    // far point's rounding into it (fuzz finding P25: from 2.6e7 s down to 0.44 s over a hold at
+    // A+ = 3.2e-5 with positions of 4e18 mm, the switch 250 mm off); there f is evaluated again.
+    auto model_holds = [&](double tau) {
       const double a_t = s.a + jerk * tau;
       const double v_t = s.v + tau * (s.a + (0.5 * jerk) * tau);
-      return detail::stop_has_hold_shape(v_t, a_t, frame, stop_bounds);
+      if (!detail::stop_has_hold_shape(v_t, a_t, frame, stop_bounds)) return false;
+      const double p_t = s.p + tau * (s.v + tau * (0.5 * s.a + tau * jerk6));
+      return model_tol <= 4.0 * kRootTolerance * (std::abs(p_t) + std::abs(goal - p_t) + goal);
     };
     // A start acceleration against the push beyond A- (a < -A-, the motion still forwards:
     // v_nat > 0) is brought back by the stop at +J, as the push's first ramp does: along that
@@ -193,7 +198,7 @@ Profile finish_stop(const KinematicState& start, double target, double dir, cons
       last_step = step;
       t_at = next;
     }
-    if (std::isnan(tau)) tau = detail::find_root_quadratic(fd, same, lo, hi, t_at, f_lo);
+    if (std::isnan(tau)) tau = detail::find_root_quadratic(fd, model_holds, lo, hi, t_at, f_lo);
     const KinematicState x = detail::advance(s, jerk, tau);
     push[i] = Piece{tau, jerk, x.a, NAN};
     return finish_stop(start, target, dir, push, i + 1, 0.0, x.v, x.a, bounds);

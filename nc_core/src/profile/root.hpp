@@ -17,9 +17,10 @@ namespace nc::detail {
 // ulp wide.
 //
 // Where fd marks a point `quartic`, f is the polynomial of its four derivatives there (exactly, up
-// to rounding) for as long as `same(x)` holds: the search then solves that polynomial by Newton
-// steps from the model's root, and returns the result without evaluating f again if `same` holds
-// there (issue 17: a root on such a stretch took 2-3 evaluations of ~150 instructions each).
+// to rounding) on a stretch around it: the search then solves that polynomial by Newton steps from
+// the model's root, and returns the result without evaluating f again if `model_holds(root)` says
+// the model gives f there to the root's tolerance (issue 17: a root on such a stretch took 2-3
+// evaluations of ~150 instructions each).
 struct RootPoint {
   double f = 0.0;
   double df = 0.0;
@@ -55,8 +56,8 @@ inline double quartic_step(const RootPoint& y, double h) noexcept {
 inline constexpr int kModelSteps = 64;
 inline constexpr int kRootSteps = 200;
 
-template <class FD, class Same>
-double find_root_quadratic(FD&& fd, Same&& same, double lo, double hi, double x,
+template <class FD, class ModelHolds>
+double find_root_quadratic(FD&& fd, ModelHolds&& model_holds, double lo, double hi, double x,
                            double f_lo) noexcept {
   const double origin = lo;
   double last_step = 0.0;  // the previous model step (its model predicted f = 0 here)
@@ -81,7 +82,7 @@ double find_root_quadratic(FD&& fd, Same&& same, double lo, double hi, double x,
     if (y.quartic) {
       const double h = quartic_step(y, step);
       const double root = x + h;
-      if (root > lo && root < hi && same(root)) return root;
+      if (root > lo && root < hi && model_holds(root)) return root;
     }
     double next = x + step;
     const bool slow = last_f != 0.0 && std::abs(y.f) > 0.125 * std::abs(last_f);
