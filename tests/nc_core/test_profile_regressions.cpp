@@ -340,3 +340,37 @@ TEST_CASE("a plan to rest whose switch search starts far out on a hold at a tiny
     CHECK(prof.duration() == Approx(2.4381443389016373).epsilon(1e-12));
   }
 }
+
+// Fuzz finding P26 (found by the rehearsal of CI's run after P25's fix; the same on cbe443a): a
+// target 2 mm ahead, passed at v_end, from v0 = 1.57e11 mm/s with a = 0, where V lies 0.063 mm/s
+// above v0 and v_end 0.025 mm/s below it, J = 7.2e-9. The walk takes v0 as at V and as at v_end
+// (within its rounding, 4e-13 of v here), but V not as at v_end: the push had no piece, and the
+// planner's branch for a push that reaches V planned the change from (V, 0), 7009 s and 1.1e15 mm
+// long, cut the cruise to 0 and anchored that change at the target: the profile jumped back by
+// 1.1e15 mm after its first segment. The change now starts from the start itself when the push
+// has no piece: it ends where the start's own change does (here at once), and the profile cruises
+// the 2 mm at v0.
+TEST_CASE("a target passed at v_end just ahead of a start at V within rounding is cruised to",
+          "[profile][regression]") {
+  const double v0 = 156842099844.51761;
+  const double target = 2.000862972323632;
+  const Limits l{156842099844.58014, 156842103296.51764, 156841673235.99945,
+                 7.1597776909849576e-09};
+  const double v_end = 156842099844.49219;
+  for (const double dir : {1.0, -1.0}) {
+    INFO("direction " << dir);
+    const KinematicState start{dir * 6.0738544773477918e-110, dir * v0, 0.0};
+    const Profile prof = nc::plan_position(start, dir * target, dir * v_end, l);
+    REQUIRE(prof.ok());
+    const profile_checks::Finding f =
+        profile_checks::check_passing_profile(prof, start, dir * target, dir * v_end, l);
+    INFO(profile_checks::to_string(f));
+    CHECK(f.ok());
+    // One cruise at v0 over the 2 mm (the old profile: 7009 s, two ramps of J).
+    REQUIRE(prof.segment_count() == 1);
+    CHECK(prof.segment(0).j == 0.0);
+    CHECK(prof.segment(0).v == dir * v0);
+    CHECK(prof.duration() == Approx(target / v0).epsilon(1e-9));
+    CHECK(prof.final_state().p == dir * target);
+  }
+}

@@ -321,10 +321,18 @@ Profile plan_position(const KinematicState& start, double target, double target_
     s = next;
     e_here = e_next;
   }
-  // The push reaches V: cruise for the rest, then the change from (V, 0) to ve.
-  n_change = detail::velocity_change(limits.velocity, 0.0, ve, bounds, change);
+  // The push reaches V: cruise for the rest, then the change to ve — from (V, 0) exactly after
+  // the push's pieces, from the start itself where the push has none (the start is at V within
+  // the walk's rounding, a = 0). The walk's "within rounding" is not transitive: a start within
+  // it of V and of ve where V is not within it of ve (fuzz finding P26: v0 = 1.57e11 mm/s, V and
+  // ve 0.06 and 0.03 mm/s away at J = 7.2e-9) had its change from V end 1.1e15 mm beyond a goal
+  // 2 mm ahead of the start's own E(0) = 0: the cruise was cut to 0 and the anchored change
+  // jumped back by that distance. From the start, the change ends at E(0), short of the goal.
+  const double v_from = n_push > 0 ? limits.velocity : s.v;
+  const double a_from = n_push > 0 ? 0.0 : s.a;
+  n_change = detail::velocity_change(v_from, a_from, ve, bounds, change);
   if (n_change < 0) return Profile::failure(ErrorCode::kPlannerNoSolution);
-  const double s_end = s.p + detail::pieces_distance(limits.velocity, 0.0, change, n_change);
+  const double s_end = s.p + detail::pieces_distance(v_from, a_from, change, n_change);
   const double cruise = std::max((goal - s_end) / limits.velocity, 0.0);
   const int n_head = detail::settle_push(push, n_push, s.a, limits.jerk);
   return finish_moving(start, target, v_end, dir, push, n_head, cruise, change, n_change);
