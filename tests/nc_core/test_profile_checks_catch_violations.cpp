@@ -121,3 +121,40 @@ TEST_CASE("the checks catch a profile that does not start at the given state",
       profile_checks::check_structure(Profile::failure(nc::ErrorCode::kJerkNotAllowed), {}).check ==
       Check::kNotOk);
 }
+
+TEST_CASE(
+    "a start far above its acceleration bound is held to its ramp at J, to the rounding of "
+    "absolute time",
+    "[profile][checks]") {
+  profile_checks::StartRelief relief;
+  relief.over_speed = true;
+  relief.over_acceleration = true;
+  // Fuzz finding P27 (a mistake of the checker): from a0 = 0.122 = 1.7e7 A+ the plan ramps at J
+  // to A+ and reaches it at t = 512 s, 0.6 ulp of t after the kink (a0 - A+) / J of the envelope
+  // a0 - J t; a at the kink was 2.3e-9 of A+ above the bound. Within the resolution of the times.
+  const KinematicState start{2.9040813893882147e-315, -31.247058823529411, 0.12205882352941438};
+  const Limits l{0.00047683302386134277, 7.0415291271033577e-09, 0.00047679239582708652,
+                 0.00023839613970588235};
+  const Profile prof = nc::plan_position(start, 0.00047679227941176469, l);
+  REQUIRE(prof.ok());
+  const profile_checks::Finding f = profile_checks::check_limits(prof, l, {}, relief);
+  INFO(profile_checks::to_string(f));
+  CHECK(f.ok());
+
+  // A ramp from a0 = 1e7 A+ that stops 1e-8 s early and holds what it reached, 1e-5 of A+ above
+  // A+ (ten thousand times the rounding the envelope allows): caught; the ramp that ends on A+
+  // and holds it: not.
+  const Limits far{1e9, 1e-3, 1e-3, 1.0};
+  const double ramp = (1e4 - far.acceleration) / far.jerk;
+  for (const double early : {0.0, 1e-8}) {
+    INFO("ramp stopped " << early << " s early");
+    Profile held;
+    held.reset({0.0, 0.0, 1e4});
+    held.append(ramp - early, -far.jerk);
+    held.append(100.0, 0.0);
+    held.close();
+    const profile_checks::Finding g = profile_checks::check_limits(held, far, {}, relief);
+    INFO(profile_checks::to_string(g));
+    CHECK((early == 0.0 ? g.ok() : g.check == Check::kAcceleration));
+  }
+}

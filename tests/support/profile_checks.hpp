@@ -321,13 +321,22 @@ inline Finding check_limits(const nc::Profile& prof, const nc::Limits& l, const 
       for (double tau : {ta, tb}) {
         const double aa = std::fabs(s.a + tau * s.j);
         double allowed = bound;
-        if (relief.over_acceleration)
+        // a inside a segment is a + j·tau, rounded to a few ulp of its largest term.
+        double slack = a_round;
+        if (relief.over_acceleration) {
           allowed = std::max(allowed, std::fabs(s0.a) - l.jerk * (s.t0 + tau));
+          // The envelope runs in the profile's absolute time, and so does its kink where it meets
+          // the bound: the segments' start times are sums of durations, known to a few ulp of t,
+          // and (|a0| - bound) / J to a few ulp of |a0| / J. A ramp that ends on the bound there
+          // is only known to end at the kink to J times that (fuzz finding P27, a mistake of the
+          // checker: a0 = 1.7e7 A+ ramped down to A+ at t = 512 s, 0.6 ulp of t after the kink
+          // computed from a0, and a at the kink was 2.3e-9 of A+ above it).
+          slack += 4.0 * std::numeric_limits<double>::epsilon() *
+                   (std::fabs(s0.a) + l.jerk * (s.t0 + tau));
+        }
         // Where v crosses 0 the bound switches from A- to A+. v itself is only known to a few
         // ulp of the speeds it went through (dv), so the crossing time only to dv/|a|, and a
         // there only to J·dv/|a|: with a large J that is more than 1e-9 of A.
-        // And a inside a segment is a + j·tau, rounded to a few ulp of its largest term.
-        double slack = a_round;
         if (std::fabs(advance(s, tau).v) <= 4.0 * dv && aa > 0.0) slack += s_j * dv / aa;
         if (ext != nullptr) {
           ext->acceleration = std::max(ext->acceleration, aa / allowed - 1.0);
