@@ -106,22 +106,18 @@ void ServoAxis::phase_set_values(AxisSnapshot& snapshot,
 void ServoAxis::phase_publish(uint64_t cycle_counter) noexcept {
   if (two_speed_) return two_speed_->phase_publish(cycle_counter, static_cast<int32_t>(index_));
   plc::NCTOPLC_AXIS_REF& out = channel_.ref().NcToPlc;
-  if (events_) {
-    // Something the image shows may have changed since the last publish (note_event()).
+  if (events_ || channel_.changed()) {
+    // Something the image shows may have changed since the last publish (note_event(), or the
+    // channel's error, command or warnings).
     events_ = false;
-    image_ = event_image(*this);
-    out.CoupleState = image_.couple_state;
-    out.CompensationDistance = stack_.compensation.done();  // travel-relative, as D
-    out.CompensationLength = stack_.compensation.length();
-    out.CompensationVelocityDiff = stack_.compensation.velocity_diff();
+    channel_.published();
+    image_ = event_image(*this, out);
   }
-#ifdef NCSDK_CHECK_EVENT_IMAGE
-  // A check build (-DNCSDK_CHECK_EVENT_IMAGE): a missed note_event() stops the program here.
-  if (!(image_ == event_image(*this))) std::abort();
-#endif
+  if (slave_link_.coupled) {  // the master's target velocity and a cyclic factor: every cycle
+    out.TargetVelo = slave_path_.target_velocity;
+    out.GearRatio = slave_link_.factor;
+  }
   const double actual = drive_.measured_position();
-  const bool enabled = channel_.controller_enabled();
-  const bool error = channel_.has_error();
 
   const KinematicState& command = drive_command();  // d: the set values phase (d) controls to
   out.SetPos = command.p;
@@ -135,9 +131,6 @@ void ServoAxis::phase_publish(uint64_t cycle_counter) noexcept {
   out.ModuloActPos = modulo_position(actual, modulo_factor_);
   out.ModuloSetPos = modulo_position(command.p, modulo_factor_);
   out.TargetPos = target_;
-  out.TargetVelo = target_velocity();
-  channel_.publish(static_cast<int32_t>(index_));
-  out.GearRatio = slave_link_.coupled ? slave_link_.factor : 0.0;
   out.CycleCounter = static_cast<uint32_t>(cycle_counter);
 
   // Constant velocity: a velocity job at its level, or the cruise phase of a positioning.
@@ -148,7 +141,6 @@ void ServoAxis::phase_publish(uint64_t cycle_counter) noexcept {
        std::abs(set_.a) <= image_.constant_acceleration && set_jerk_ == 0.0);
 
   uint32_t word = image_.state_bits;
-  set_state_bit(word, plc::kStateOperational, enabled && !error);
   set_state_bit(word, plc::kStateNotMoving, std::abs(drive_.velocity()) < standstill_window_);
   set_state_bit(word, plc::kStateInPositionArea, monitors_.in_position_area());
   set_state_bit(word, plc::kStateInTargetPosition, monitors_.in_target_position());
@@ -157,13 +149,11 @@ void ServoAxis::phase_publish(uint64_t cycle_counter) noexcept {
   set_state_bit(word, plc::kStateConstantVelocity, constant_velocity);
   set_state_bit(word, plc::kStateSoftLimitMinExceeded, monitors_.below_min(actual));
   set_state_bit(word, plc::kStateSoftLimitMaxExceeded, monitors_.above_max(actual));
-  set_state_bit(word, plc::kStateError, error);
   out.StateDWord = word;
-
-  // PLCopen state: ErrorStop and Disabled before the image's.
-  out.AxisState = error      ? static_cast<uint32_t>(plc::AxisState::kErrorStop)
-                  : !enabled ? static_cast<uint32_t>(plc::AxisState::kDisabled)
-                             : image_.axis_state;
+#ifdef NCSDK_CHECK_EVENT_IMAGE
+  // A check build (-DNCSDK_CHECK_EVENT_IMAGE): a missed note_event() stops the program here.
+  if (!image_consistent(*this)) std::abort();
+#endif
 }
 
 void ServoAxis::phase_drive_command(const KinematicState& drive, ErrorCode stop,
@@ -218,6 +208,7 @@ void AxisMonitoring::check_enables() noexcept {
   AxisCore& a = s_;  // held in a register: no reload of s_ after each store
   const bool enabled = a.channel_.controller_enabled();
   const bool lost = a.enable_seen_ && !enabled;
+  if (enabled != a.enable_seen_) a.note_event();  // StateDWord's Operational, AxisState
   a.enable_seen_ = enabled;
   if (a.slave_count_ == 0) {  // no group to follow this axis: never case 2 (follows_by_hand())
     GroupErrors(a).end_by_hand();

@@ -59,9 +59,10 @@ class KernelAxes {
   // (AxisConfig::id) now: the drive position by default, solved through its list with
   // P-AXIS-00436 / 00460. NaN for an unknown axis number.
   double command_position_request(int ax_nr) const noexcept;
-  // The check of the steady cycle's kept image (docs/performance.md "Fourth pass"): what axis
-  // `index` published in the last cycle that only events change (StateDWord bits, AxisState,
-  // CoupleState, the compensation's values) equals its full recomputation now. For tests and the
+  // The check of the steady cycle's kept image (docs/performance.md "Fourth pass", "Fifth
+  // pass"): what axis `index` published in the last cycle that only events change (StateDWord
+  // bits, AxisState, CoupleState, the compensation's values, TargetVelo, GearRatio, ErrorCode,
+  // Warning, CmdNo, CmdState, AxisIndex) equals its full recomputation now. For tests and the
   // fuzz watch, between a cycle and the PLC's next writes. Unchecked index.
   bool published_image_consistent(std::size_t index) const noexcept;
 
