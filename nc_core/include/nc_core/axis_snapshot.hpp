@@ -2,8 +2,9 @@
 // read of another (a slave its master's set values, a group its members' errors).
 //
 // Written by the kernel's phases as they go: the set values in the set-value phase (so a slave,
-// computed after its master, reads the master's values of the same cycle), the actual values in
-// the drive phase, error and enables in the monitor phase. Plain data.
+// computed after its master, reads the master's values of the same cycle; only while some axis
+// reads another), error and enables in the monitor phase. The set and actual values as the cycle
+// left them, which no axis reads, are filled in by Kernel::snapshot(). Plain data.
 #pragma once
 
 #include <cstdint>

@@ -70,8 +70,8 @@ void ServoAxis::phase_commands(CouplingPort& port) noexcept {
   run_alone(snapshot, snapshots, cycle_counter);
 }
 
-void ServoAxis::phase_set_values(AxisSnapshot& snapshot,
-                                 std::span<const AxisSnapshot> snapshots) noexcept {
+void ServoAxis::phase_set_values(AxisSnapshot& snapshot, std::span<const AxisSnapshot> snapshots,
+                                 bool shared) noexcept {
   if (two_speed_) return two_speed_->phase_set_values(snapshot);
   if (slave_link_.coupled) {
     // Seed 000 §3.2.2: slave target velocity = coupling factor × master target velocity; the
@@ -93,10 +93,12 @@ void ServoAxis::phase_set_values(AxisSnapshot& snapshot,
   snapshot.path_stopping = path.stopping;
   snapshot.path_positioning = path.positioning;
   snapshot.path_has_target = path.has_target;
-  snapshot.set_position = set_.p;
-  snapshot.set_velocity = set_.v;
-  snapshot.set_acceleration = set_.a;
-  snapshot.set_jerk = set_jerk_;
+  if (shared) {  // read in this cycle by slaves and the HLI stage; after it, fill_motion()
+    snapshot.set_position = set_.p;
+    snapshot.set_velocity = set_.v;
+    snapshot.set_acceleration = set_.a;
+    snapshot.set_jerk = set_jerk_;
+  }
   // C8: the filtered actual values instead (error_propagation.cpp); without slaves and a filter
   // running it has nothing to do.
   if (slave_count_ != 0 || actual_filter_.active) GroupErrors(*this).publish_for_slaves(snapshot);
@@ -171,9 +173,16 @@ void ServoAxis::phase_drive(AxisSnapshot& snapshot) noexcept {
   if (two_speed_) return two_speed_->phase_drive(snapshot);
   AxisMotion(*this).control_and_drive();
   previous_drive_position_ = drive_command().p;
+  // The set and actual values the snapshot shows after the cycle: no axis reads them in the
+  // rest of it, so Kernel::snapshot() fills them (fill_motion()).
+}
+
+void ServoAxis::fill_motion(AxisSnapshot& snapshot) const noexcept {
+  if (two_speed_) return;          // its phases write them
   snapshot.set_position = set_.p;  // without the controller enable it follows the actual one
   snapshot.set_velocity = set_.v;
   snapshot.set_acceleration = set_.a;
+  snapshot.set_jerk = set_jerk_;
   snapshot.actual_position = drive_.measured_position();
   snapshot.actual_velocity = drive_.velocity();
   snapshot.actual_acceleration = drive_.acceleration();

@@ -47,7 +47,9 @@ class ServoAxis : private AxisCore {
   // calls each for every axis before the next. The snapshot is what other axes may read.
   void phase_commands(CouplingPort& port) noexcept;  // (a)
   // (b); `snapshots`: every axis's, a slave reads its master's (computed before it this cycle).
-  void phase_set_values(AxisSnapshot& snapshot, std::span<const AxisSnapshot> snapshots) noexcept;
+  // `shared`: other axes read this cycle's set values (false: no axis reads another).
+  void phase_set_values(AxisSnapshot& snapshot, std::span<const AxisSnapshot> snapshots,
+                        bool shared = true) noexcept;
   // (c) HLI coupling (SPEC D3), called only while the kernel's coupling stage is engaged: the
   // set values phase (d) controls to this cycle (NcToPlc.SetPos; without a call they are the
   // program's set values), and `stop` != kNone raises that axis error (program on its emergency
@@ -56,14 +58,17 @@ class ServoAxis : private AxisCore {
   // master), kept until the next call, for CoupleState and the refusal of external setpoints.
   void phase_drive_command(const KinematicState& drive, ErrorCode stop,
                            plc::CoupleState role) noexcept;
-  void phase_drive(AxisSnapshot& snapshot) noexcept;     // (d)
+  void phase_drive(AxisSnapshot& snapshot) noexcept;  // (d)
+  // Between cycles: the set values (with the jerk) and the actual values as the last cycle left
+  // them, into `snapshot` (a servo axis's phases leave them out of it; Kernel::snapshot()).
+  void fill_motion(AxisSnapshot& snapshot) const noexcept;
   void phase_monitors(AxisSnapshot& snapshot) noexcept;  // (e)
   void phase_publish(uint64_t cycle_counter) noexcept;   // (f)
   // Phases (b), (d), (e), (f) one after the other, for a kernel in which no axis reads another
   // (no coupling, HLI stage not engaged): the same as the kernel's phase loops.
   void run_alone(AxisSnapshot& snapshot, std::span<const AxisSnapshot> snapshots,
                  uint64_t cycle_counter) noexcept {
-    phase_set_values(snapshot, snapshots);
+    phase_set_values(snapshot, snapshots, false);
     phase_drive(snapshot);
     phase_monitors(snapshot);
     phase_publish(cycle_counter);

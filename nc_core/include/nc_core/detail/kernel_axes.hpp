@@ -47,8 +47,10 @@ class KernelAxes {
   // ConfigError when there is no such axis or it is not of kind kTwoSpeed.
   const plc::NCTOIO_DRIVE_TWO_SPEED& two_speed_output(std::string_view name) const;
 
-  // What axis `index` published to the other axes in the last cycle. Unchecked index.
-  const AxisSnapshot& snapshot(std::size_t index) const noexcept { return snapshots_[index]; }
+  // What axis `index` published to the other axes in the last cycle. Unchecked index. Between
+  // cycles (it fills in the set and actual values, which the cycle leaves out while no axis reads
+  // them: not concurrently with cycle()).
+  const AxisSnapshot& snapshot(std::size_t index) const noexcept;
   // Who follows whom (the MC_GearIn / MC_GearInDyn couplings in force).
   const CouplingGraph& couplings() const noexcept { return couplings_; }
 
@@ -73,7 +75,7 @@ class KernelAxes {
   ServoAxis& find(std::string_view name) const;
 
   std::vector<std::unique_ptr<ServoAxis>> axes_;
-  std::vector<AxisSnapshot> snapshots_;
+  mutable std::vector<AxisSnapshot> snapshots_;  // snapshot() fills in the motion values
   CouplingGraph couplings_;
   std::vector<uint8_t> group_ready_;  // scratch of Kernel::mark_ready_groups(), one per axis
   // Phase (c): the HLI coupling stage (on the heap: its control units keep their addresses).
