@@ -142,6 +142,7 @@ struct AxisCore {
   // The axis errors raised, counted wrapping (the HLI phase: an error raised and reset between two
   // phases (c) still shows as a change).
   uint32_t errors_raised_ = 0;
+  uint32_t control_seen_ = 0;  // PlcToNc.ControlDWord as the last check_enables() read it
   plc::CoupleState hli_role_ = plc::CoupleState::kSingle;  // from phase (c), see there
   bool encoder_ = false;                                   // config_.kind == AxisKind::kEncoder
   bool drive_command_given_ = false;  // phase (c) gave drive_command_ in this cycle
@@ -150,7 +151,6 @@ struct AxisCore {
   bool locked_ = false;  // MC_Stop: motion commands refused until kStopRelease
   bool has_been_stopped_ = false;
   bool error_event_ = false;  // an error was raised in this cycle
-  bool enable_seen_ = false;  // the controller enable of the last check_enables()
   bool group_ready_ = false;  // see set_group_ready()
   bool by_hand_ = false;      // case 2 in force (follows_by_hand() latched)
   bool events_ = true;        // an event since image_ was computed (note_event())

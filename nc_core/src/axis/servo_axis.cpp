@@ -174,11 +174,15 @@ void ServoAxis::phase_drive(AxisSnapshot& snapshot) noexcept {
   AxisMotion(*this).control_and_drive();
   previous_drive_position_ = drive_command().p;
   // The set and actual values the snapshot shows after the cycle: no axis reads them in the
-  // rest of it, so Kernel::snapshot() fills them (fill_motion()).
+  // rest of it, so Kernel::snapshot() fills them (fill_snapshot()).
 }
 
-void ServoAxis::fill_motion(AxisSnapshot& snapshot) const noexcept {
-  if (two_speed_) return;          // its phases write them
+void ServoAxis::fill_snapshot(AxisSnapshot& snapshot) const noexcept {
+  if (two_speed_) return;                  // its phases write them
+  const uint32_t control = control_seen_;  // the enables of this cycle (PlcToNc may have changed)
+  snapshot.controller_enabled = plc::test_bit(control, plc::kControlEnable);
+  snapshot.feed_enabled_plus = plc::test_bit(control, plc::kControlFeedEnablePlus);
+  snapshot.feed_enabled_minus = plc::test_bit(control, plc::kControlFeedEnableMinus);
   snapshot.set_position = set_.p;  // without the controller enable it follows the actual one
   snapshot.set_velocity = set_.v;
   snapshot.set_acceleration = set_.a;
@@ -188,7 +192,7 @@ void ServoAxis::fill_motion(AxisSnapshot& snapshot) const noexcept {
   snapshot.actual_acceleration = drive_.acceleration();
 }
 
-void ServoAxis::phase_monitors(AxisSnapshot& snapshot) noexcept {
+void ServoAxis::phase_monitors(AxisSnapshot& snapshot, bool shared) noexcept {
   if (two_speed_) return two_speed_->phase_monitors(snapshot);
   AxisMonitoring(*this).run_monitors();
   AxisMonitoring(*this).finish_job();
@@ -200,14 +204,12 @@ void ServoAxis::phase_monitors(AxisSnapshot& snapshot) noexcept {
   } else {
     snapshot.group_reaction_due = false;
   }
-  const uint32_t control = channel_.ref().PlcToNc.ControlDWord;
-  snapshot.controller_enabled = plc::test_bit(control, plc::kControlEnable);
-  snapshot.feed_enabled_plus = plc::test_bit(control, plc::kControlFeedEnablePlus);
-  snapshot.feed_enabled_minus = plc::test_bit(control, plc::kControlFeedEnableMinus);
+  const bool enabled = plc::test_bit(control_seen_, plc::kControlEnable);
+  if (shared) fill_snapshot(snapshot);  // the group reactions read the enables (else snapshot())
   // The precondition of SPEC C8 case 2 for the group of this axis alone; for the head of a larger
   // group the kernel replaces it after the group reactions (Kernel::mark_ready_groups).
   if (!slave_link_.coupled && !slave_link_.detached) {
-    group_ready_ = snapshot.error == ErrorCode::kNone && snapshot.controller_enabled;
+    group_ready_ = snapshot.error == ErrorCode::kNone && enabled;
   }
 }
 
@@ -215,10 +217,12 @@ void ServoAxis::phase_monitors(AxisSnapshot& snapshot) noexcept {
 
 void AxisMonitoring::check_enables() noexcept {
   AxisCore& a = s_;  // held in a register: no reload of s_ after each store
-  const bool enabled = a.channel_.controller_enabled();
-  const bool lost = a.enable_seen_ && !enabled;
-  if (enabled != a.enable_seen_) a.note_event();  // StateDWord's Operational, AxisState
-  a.enable_seen_ = enabled;
+  const uint32_t control = a.channel_.ref().PlcToNc.ControlDWord;
+  const bool enabled = plc::test_bit(control, plc::kControlEnable);
+  const bool seen = plc::test_bit(a.control_seen_, plc::kControlEnable);
+  const bool lost = seen && !enabled;
+  if (enabled != seen) a.note_event();  // StateDWord's Operational, AxisState
+  a.control_seen_ = control;
   if (a.slave_count_ == 0) {  // no group to follow this axis: never case 2 (follows_by_hand())
     GroupErrors(a).end_by_hand();
   } else {

@@ -59,18 +59,21 @@ class ServoAxis : private AxisCore {
   void phase_drive_command(const KinematicState& drive, ErrorCode stop,
                            plc::CoupleState role) noexcept;
   void phase_drive(AxisSnapshot& snapshot) noexcept;  // (d)
-  // Between cycles: the set values (with the jerk) and the actual values as the last cycle left
-  // them, into `snapshot` (a servo axis's phases leave them out of it; Kernel::snapshot()).
-  void fill_motion(AxisSnapshot& snapshot) const noexcept;
-  void phase_monitors(AxisSnapshot& snapshot) noexcept;  // (e)
-  void phase_publish(uint64_t cycle_counter) noexcept;   // (f)
+  // The set values (with the jerk), the actual values and the enables as the cycle left them,
+  // into `snapshot`: no axis reads them in the cycle but the group reactions the enables, so a
+  // servo axis's phases write them only for those (phase_monitors) and Kernel::snapshot() fills
+  // them in.
+  void fill_snapshot(AxisSnapshot& snapshot) const noexcept;
+  // (e); `shared`: the group reactions read the snapshot's enables this cycle.
+  void phase_monitors(AxisSnapshot& snapshot, bool shared = true) noexcept;
+  void phase_publish(uint64_t cycle_counter) noexcept;  // (f)
   // Phases (b), (d), (e), (f) one after the other, for a kernel in which no axis reads another
   // (no coupling, HLI stage not engaged): the same as the kernel's phase loops.
   void run_alone(AxisSnapshot& snapshot, std::span<const AxisSnapshot> snapshots,
                  uint64_t cycle_counter) noexcept {
     phase_set_values(snapshot, snapshots, false);
     phase_drive(snapshot);
-    phase_monitors(snapshot);
+    phase_monitors(snapshot, false);
     phase_publish(cycle_counter);
   }
   // Phase (a), then run_alone(): the kernel's loop while no axis reads another, in one call.
