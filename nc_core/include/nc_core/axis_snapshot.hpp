@@ -3,9 +3,9 @@
 //
 // Written by the kernel's phases as they go: the set values in the set-value phase (so a slave,
 // computed after its master, reads the master's values of the same cycle; only while some axis
-// reads another), error and enables in the monitor phase (the enables only for the group
-// reactions). The set and actual values and the enables as the cycle left them are filled in by
-// Kernel::snapshot(). Plain data.
+// reads another), the group reaction in the monitor phase, with the error and the enables while
+// the group reactions read them. The set and actual values, the error and the enables as the cycle
+// left them are filled in by Kernel::snapshot(). Plain data.
 #pragma once
 
 #include <cstdint>

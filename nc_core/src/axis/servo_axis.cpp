@@ -24,9 +24,11 @@ using plc::CommandState;
 
 namespace {
 
-// The set values (with the jerk), the actual values and the enables as the cycle left them
-// (ServoAxis::fill_snapshot()).
+// The set values (with the jerk), the actual values, the error with its event and the enables as
+// the cycle left them (ServoAxis::fill_snapshot()).
 void write_snapshot(const AxisCore& a, AxisSnapshot& snapshot) noexcept {
+  snapshot.error = a.channel_.error();
+  snapshot.error_event = a.error_event_;
   const uint32_t control = a.control_seen_;  // the enables of this cycle (PlcToNc may have changed)
   snapshot.controller_enabled = plc::test_bit(control, plc::kControlEnable);
   snapshot.feed_enabled_plus = plc::test_bit(control, plc::kControlFeedEnablePlus);
@@ -109,21 +111,19 @@ class ServoPhases : public AxisPart {
     AxisCore& a = s_;
     AxisMonitoring(a).run_monitors();
     AxisMonitoring(a).finish_job();
-    snapshot.error = a.channel_.error();
-    snapshot.error_event = a.error_event_;
     if (a.propagation_.pending) {
       a.note_event();  // the C7 delay runs (StateDWord bit 6) and ends here
       snapshot.group_reaction_due = GroupErrors(a).group_reaction_due();
     } else {
       snapshot.group_reaction_due = false;
     }
-    const bool enabled = plc::test_bit(a.control_seen_, plc::kControlEnable);
-    if (shared)
-      write_snapshot(a, snapshot);  // the group reactions read the enables (else snapshot())
+    // The group reactions read the errors and the enables (else Kernel::snapshot() fills them in).
+    if (shared) write_snapshot(a, snapshot);
     // The precondition of SPEC C8 case 2 for the group of this axis alone; for the head of a larger
     // group the kernel replaces it after the group reactions (Kernel::mark_ready_groups).
     if (!a.slave_link_.coupled && !a.slave_link_.detached) {
-      a.group_ready_ = snapshot.error == ErrorCode::kNone && enabled;
+      a.group_ready_ =
+          !a.channel_.has_error() && plc::test_bit(a.control_seen_, plc::kControlEnable);
     }
   }
   void publish(uint64_t cycle_counter) noexcept {

@@ -59,12 +59,12 @@ class ServoAxis : private AxisCore {
   void phase_drive_command(const KinematicState& drive, ErrorCode stop,
                            plc::CoupleState role) noexcept;
   void phase_drive(AxisSnapshot& snapshot) noexcept;  // (d)
-  // The set values (with the jerk), the actual values and the enables as the cycle left them,
-  // into `snapshot`: no axis reads them in the cycle but the group reactions the enables, so a
-  // servo axis's phases write them only for those (phase_monitors) and Kernel::snapshot() fills
-  // them in.
+  // The set values (with the jerk), the actual values, the error (with its event) and the enables
+  // as the cycle left them, into `snapshot`: no axis reads them in the cycle but the group
+  // reactions the errors and enables, so a servo axis's phases write them only for those
+  // (phase_monitors) and Kernel::snapshot() fills them in.
   void fill_snapshot(AxisSnapshot& snapshot) const noexcept;
-  // (e); `shared`: the group reactions read the snapshot's enables this cycle.
+  // (e); `shared`: the group reactions read the snapshot's errors and enables this cycle.
   void phase_monitors(AxisSnapshot& snapshot, bool shared = true) noexcept;
   void phase_publish(uint64_t cycle_counter) noexcept;  // (f)
   // Phases (b), (d), (e), (f) one after the other, for a kernel in which no axis reads another

@@ -48,8 +48,8 @@ class KernelAxes {
   const plc::NCTOIO_DRIVE_TWO_SPEED& two_speed_output(std::string_view name) const;
 
   // What axis `index` published to the other axes in the last cycle. Unchecked index. Between
-  // cycles (it fills in the set and actual values and the enables, which the cycle leaves out
-  // while no axis reads them: not concurrently with cycle()).
+  // cycles (it fills in the set and actual values, the error and the enables, which the cycle
+  // leaves out while no axis reads them: not concurrently with cycle()).
   const AxisSnapshot& snapshot(std::size_t index) const noexcept;
   // Who follows whom (the MC_GearIn / MC_GearInDyn couplings in force).
   const CouplingGraph& couplings() const noexcept { return couplings_; }
