@@ -24,9 +24,18 @@ using plc::CommandState;
 
 namespace {
 
-// The set values (with the jerk), the actual values, the error with its event and the enables as
-// the cycle left them (ServoAxis::fill_snapshot()).
+// The snapshot but the group reaction and what a master driving its slaves by its actual values
+// gives them (written by the phases): the target and the basic path, the set values (with the
+// jerk), the actual values, the error with its event and the enables, as the axis has them now
+// (ServoAxis::fill_snapshot()).
 void write_snapshot(const AxisCore& a, AxisSnapshot& snapshot) noexcept {
+  const BasicPath path = a.basic_path();
+  snapshot.target_position = a.target_;
+  snapshot.target_velocity = path.target_velocity;
+  snapshot.path_running = path.running;
+  snapshot.path_stopping = path.stopping;
+  snapshot.path_positioning = path.positioning;
+  snapshot.path_has_target = path.has_target;
   snapshot.error = a.channel_.error();
   snapshot.error_event = a.error_event_;
   const uint32_t control = a.control_seen_;  // the enables of this cycle (PlcToNc may have changed)
@@ -83,19 +92,9 @@ class ServoPhases : public AxisPart {
       a.target_ = a.slave_path_.target;
     }
     AxisMotion(a).generate_set_values(snapshots);
-    const BasicPath path = a.basic_path();
-    snapshot.target_position = a.target_;
-    snapshot.target_velocity = path.target_velocity;
-    snapshot.path_running = path.running;
-    snapshot.path_stopping = path.stopping;
-    snapshot.path_positioning = path.positioning;
-    snapshot.path_has_target = path.has_target;
-    if (shared) {  // read in this cycle by slaves and the HLI stage; after it, fill_snapshot()
-      snapshot.set_position = a.set_.p;
-      snapshot.set_velocity = a.set_.v;
-      snapshot.set_acceleration = a.set_.a;
-      snapshot.set_jerk = a.set_jerk_;
-    }
+    // The set values and the path, read in this cycle by slaves and the HLI stage (after the
+    // cycle Kernel::snapshot() fills the snapshot in).
+    if (shared) write_snapshot(a, snapshot);
     // C8: the filtered actual values instead (error_propagation.cpp); without slaves and a filter
     // running it has nothing to do.
     if (a.slave_count_ != 0 || a.actual_filter_.active) GroupErrors(a).publish_for_slaves(snapshot);
@@ -117,7 +116,8 @@ class ServoPhases : public AxisPart {
     } else {
       snapshot.group_reaction_due = false;
     }
-    // The group reactions read the errors and the enables (else Kernel::snapshot() fills them in).
+    // The group reactions read the errors and the enables (after the cycle Kernel::snapshot()
+    // fills the snapshot in).
     if (shared) write_snapshot(a, snapshot);
     // The precondition of SPEC C8 case 2 for the group of this axis alone; for the head of a larger
     // group the kernel replaces it after the group reactions (Kernel::mark_ready_groups).

@@ -59,10 +59,9 @@ class ServoAxis : private AxisCore {
   void phase_drive_command(const KinematicState& drive, ErrorCode stop,
                            plc::CoupleState role) noexcept;
   void phase_drive(AxisSnapshot& snapshot) noexcept;  // (d)
-  // The set values (with the jerk), the actual values, the error (with its event) and the enables
-  // as the cycle left them, into `snapshot`: no axis reads them in the cycle but the group
-  // reactions the errors and enables, so a servo axis's phases write them only for those
-  // (phase_monitors) and Kernel::snapshot() fills them in.
+  // The axis as the cycle left it into `snapshot` (all but the group reaction and a C8 master's
+  // filtered values, which its phases write): Kernel::snapshot(). A servo axis's phases write the
+  // snapshot only when `shared` (some axis reads another this cycle).
   void fill_snapshot(AxisSnapshot& snapshot) const noexcept;
   // (e); `shared`: the group reactions read the snapshot's errors and enables this cycle.
   void phase_monitors(AxisSnapshot& snapshot, bool shared = true) noexcept;

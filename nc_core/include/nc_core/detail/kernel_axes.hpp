@@ -47,9 +47,9 @@ class KernelAxes {
   // ConfigError when there is no such axis or it is not of kind kTwoSpeed.
   const plc::NCTOIO_DRIVE_TWO_SPEED& two_speed_output(std::string_view name) const;
 
-  // What axis `index` published to the other axes in the last cycle. Unchecked index. Between
-  // cycles (it fills in the set and actual values, the error and the enables, which the cycle
-  // leaves out while no axis reads them: not concurrently with cycle()).
+  // Axis `index` as the last cycle left it, in the form other axes read it in a cycle (filled in
+  // here: a cycle writes snapshots only while some axis reads another). Unchecked index. Between
+  // cycles, not concurrently with cycle().
   const AxisSnapshot& snapshot(std::size_t index) const noexcept;
   // Who follows whom (the MC_GearIn / MC_GearInDyn couplings in force).
   const CouplingGraph& couplings() const noexcept { return couplings_; }
