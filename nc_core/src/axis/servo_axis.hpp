@@ -91,8 +91,8 @@ class ServoAxis : private AxisCore {
 
 // Asks for the lines a steady cycle of `axis` reads (axis_core.hpp: the hot members up to the
 // homing's phase, the stack's and the channel's first lines, the job with its profile's header,
-// the buffer's flag) and its snapshot, so that the kernel fetches the next axes' data while it
-// runs this one.
+// the buffer's flag) and its snapshot's group reaction, so that the kernel fetches the next axes'
+// data while it runs this one.
 [[gnu::always_inline]] inline void prefetch_cycle_data(const ServoAxis& axis,
                                                        const AxisSnapshot& snapshot) noexcept {
   const AxisCore& a = axis.core();
@@ -102,7 +102,7 @@ class ServoAxis : private AxisCore {
   prefetch_lines(&a.channel_, 256);
   prefetch_lines(&a.job_, 256);
   prefetch_lines(&a.buffer_.waiting, 1);
-  prefetch_lines(&snapshot, sizeof(AxisSnapshot));
+  prefetch_lines(&snapshot.group_reaction_due, 1);  // the steady cycle writes only this
 }
 
 }  // namespace nc::detail
