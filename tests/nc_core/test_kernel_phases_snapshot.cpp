@@ -103,7 +103,7 @@ TEST_CASE("between cycles the snapshot shows the axis as the cycle left it, coup
   CHECK_FALSE(rig.kernel.snapshot(0).path_positioning);
   CHECK(rig.kernel.snapshot(0).actual_position == rig.at(0).NcToPlc.ActPos);
   // A2 follows A1 at 0.5 (phase by phase); A1 moves.
-  REQUIRE(rig.couple(2, 1, 0.5).state == plc::CommandState::kActive);
+  REQUIRE(rig.couple(2, 1, 0.5).state == plc::CommandState::kReached);  // InGear
   const uint16_t master_move = rig.post(1, kt::move_absolute(200.0, 1000.0));
   run(100);
   CHECK(rig.kernel.snapshot(1).path_running);
@@ -116,7 +116,7 @@ TEST_CASE("between cycles the snapshot shows the axis as the cycle left it, coup
   CHECK(diff == 0);
   // The PLC's writes after a cycle do not change what the cycle left: the enables are that
   // cycle's.
-  kt::set_enables(rig.at(0), false);
+  kt::set_enables(rig.at(0), false, false, false);
   CHECK(rig.kernel.snapshot(0).controller_enabled);
   CHECK(rig.kernel.snapshot(0).feed_enabled_plus);
   rig.kernel.cycle();
