@@ -93,12 +93,17 @@ void Kernel::cycle() noexcept {
     // No axis reads another in this cycle, and none will start to: each axis runs all its
     // phases (a) to (f) before the next one, so its data stays in the cache and the kernel
     // loops once (docs/architecture.md "One tick").
+    // The arrays in locals: the call of each axis could change the members, so they would be
+    // loaded again after each (the vectors do not change in a cycle).
+    const std::unique_ptr<detail::ServoAxis>* const axes = axes_.data();
+    AxisSnapshot* const snapshots = snapshots_.data();
+    const std::span<const AxisSnapshot> all(snapshots, n);
     for (std::size_t i = 0; i < n; ++i) {
       // The data of the axis after the next one is on its way while this one runs.
       if (i + kPrefetchAhead < n) {
-        detail::prefetch_cycle_data(*axes_[i + kPrefetchAhead], snapshots_[i + kPrefetchAhead]);
+        detail::prefetch_cycle_data(*axes[i + kPrefetchAhead], snapshots[i + kPrefetchAhead]);
       }
-      axes_[i]->run_cycle_alone(port, snapshots_[i], snapshots_, counter);
+      axes[i]->run_cycle_alone(port, snapshots[i], all, counter);
     }
   } else {
     // (a) commands of every axis first: a coupling command reads other axes and changes the

@@ -128,6 +128,14 @@ TEST_CASE("The kept image equals its recomputation through every kind of event",
   kt::set_override(r.at(0), 50.0);
   r.run(200);
   kt::set_override(r.at(0), 100.0);
+  // An override above 100 % is not taken: its warning shows (a change of the channel, not a
+  // note_event()) and goes with the next valid one.
+  r.at(0).PlcToNc.Override = plc::kOverrideFull + 1;
+  r.run(3);
+  CHECK(r.at(0).NcToPlc.Warning == kt::id(plc::ErrorCode::kOverrideNotAllowed));
+  kt::set_override(r.at(0), 100.0);
+  r.run(3);
+  CHECK(r.at(0).NcToPlc.Warning == 0);
   r.act(0, kt::simple(plc::CommandType::kHalt), 600);
   CHECK(r.at(0).NcToPlc.AxisState == static_cast<uint32_t>(plc::AxisState::kStandstill));
   // Online functions: a new end position, a new position and velocity at an activation point.
@@ -210,6 +218,16 @@ TEST_CASE("The kept image equals its recomputation through every kind of event",
   kt::set_enables(r.at(0), true);
   r.act(0, kt::simple(plc::CommandType::kReset), 50);
   CHECK(r.at(0).NcToPlc.AxisState == static_cast<uint32_t>(plc::AxisState::kStandstill));
+  // The controller enable taken and given back at rest (its edges are events: Operational,
+  // AxisState).
+  kt::set_enables(r.at(2), false);
+  r.run(3);
+  CHECK(r.at(2).NcToPlc.AxisState == static_cast<uint32_t>(plc::AxisState::kDisabled));
+  CHECK_FALSE(kt::bit(r.at(2), plc::kStateOperational));
+  kt::set_enables(r.at(2), true);
+  r.run(3);
+  CHECK(r.at(2).NcToPlc.AxisState == static_cast<uint32_t>(plc::AxisState::kStandstill));
+  CHECK(kt::bit(r.at(2), plc::kStateOperational));
   CHECK(r.inconsistent == 0);
 }
 

@@ -1,6 +1,7 @@
 // No allocation in the cycle path (brief, ARCHITECTURE "One tick"): a counting global operator
 // new over 10 000 NC cycles of 8 moving axes, with their MC_Power and MC_MoveAbsolute blocks
-// called every cycle, counts 0. Runs only in the plain build (the sanitizers own the allocator).
+// called every cycle, counts 0; so does Kernel::snapshot() between cycles, which fills the snapshot
+// in, and the kept image's check. Runs only in the plain build (the sanitizers own the allocator).
 #include <catch2/catch.hpp>
 
 #include <array>
@@ -29,6 +30,7 @@ TEST_CASE(
   std::array<fb::MC_Power, kAxes> power{};
   std::array<fb::MC_MoveAbsolute, kAxes> move{};
   std::array<int, kAxes> done_count{};
+  int faults = 0;  // an axis error in a snapshot, or a kept image unlike its recomputation
 
   // Sanity check of the counter itself: it sees an allocation when one happens.
   ca::g_counting = true;
@@ -58,10 +60,15 @@ TEST_CASE(
       m(axis);
     }
     kernel.cycle();
+    // Between cycles: the snapshot filled in and the kept image's check allocate nothing either.
+    const auto k = static_cast<std::size_t>(cycle) % kAxes;
+    if (kernel.snapshot(k).error != plc::ErrorCode::kNone) ++faults;
+    if (!kernel.published_image_consistent(k)) ++faults;
   }
   ca::g_counting = false;
 
   CHECK(ca::g_allocations == 0);
+  CHECK(faults == 0);
   for (std::size_t i = 0; i < kAxes; ++i) {
     INFO("axis " << i);
     CHECK(done_count[i] >= 8);  // the axes really moved back and forth

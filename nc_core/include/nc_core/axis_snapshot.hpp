@@ -1,9 +1,12 @@
 // What one axis publishes to the other axes of its kernel in a cycle: the only thing one axis may
 // read of another (a slave its master's set values, a group its members' errors).
 //
-// Written by the kernel's phases as they go: the set values in the set-value phase (so a slave,
-// computed after its master, reads the master's values of the same cycle), the actual values in
-// the drive phase, error and enables in the monitor phase. Plain data.
+// In a cycle in which some axis reads another (couplings, the HLI stage), the phases write it as
+// they go: the target, path and set values in the set-value phase (so a slave, computed after its
+// master, reads the master's values of the same cycle), everything again in the monitor phase for
+// the group reactions. Otherwise the cycle writes only the group reaction (and a C8 master's
+// filtered values). Between cycles Kernel::snapshot() fills it in with the axis as the cycle left
+// it. Plain data.
 #pragma once
 
 #include <cstdint>
@@ -12,8 +15,7 @@
 
 namespace nc {
 
-// Aligned to a cache line (120 bytes padded to 128): the kernel writes one per axis and cycle,
-// each then on two lines of its own.
+// Aligned to a cache line (120 bytes padded to 128): each on two lines of its own.
 struct alignas(64) AxisSnapshot {
   double set_position = 0.0;
   double set_velocity = 0.0;

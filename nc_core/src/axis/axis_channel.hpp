@@ -28,21 +28,34 @@ inline uint8_t warning_bit(Warning w) noexcept {
 
 // The warnings an axis latches: a bit each; NcToPlc.Warning shows the last one set while it still
 // holds, otherwise the first still latched.
+// `changed` is set by every change that may change code() (clear() only when the bit was set: the
+// override's check clears in every cycle); the channel's publish looks at it.
 class AxisWarnings {
  public:
   void warn(Warning w) noexcept {
     bits_ = static_cast<uint8_t>(bits_ | warning_bit(w));
     last_ = w;
+    changed = true;
   }
-  void clear(Warning w) noexcept { bits_ = static_cast<uint8_t>(bits_ & ~warning_bit(w)); }
+  void clear(Warning w) noexcept {
+    if ((bits_ & warning_bit(w)) == 0) return;
+    bits_ = static_cast<uint8_t>(bits_ & ~warning_bit(w));
+    changed = true;
+  }
   // All warnings but `keep` (kept when latched).
   void clear_except(Warning keep) noexcept {
     bits_ = static_cast<uint8_t>(bits_ & warning_bit(keep));
+    changed = true;
   }
-  void clear_all() noexcept { bits_ = 0; }
+  void clear_all() noexcept {
+    bits_ = 0;
+    changed = true;
+  }
   bool any() const noexcept { return bits_ != 0; }
   // NcToPlc.Warning (0: none).
   uint32_t code() const noexcept;
+
+  bool changed = true;  // since the channel's last publish (AxisChannel::changed())
 
  private:
   uint8_t bits_ = 0;  // bit per Warning
@@ -84,22 +97,36 @@ class AxisChannel {
   bool has_error() const noexcept { return error_ != plc::ErrorCode::kNone; }
   // True when `code` is latched now (false: an error was already latched).
   bool raise(plc::ErrorCode code) noexcept;
-  void clear_error() noexcept { error_ = plc::ErrorCode::kNone; }
+  void clear_error() noexcept {
+    error_ = plc::ErrorCode::kNone;
+    changed_ = true;
+  }
 
   // CmdNo, CmdState, ErrorCode, Warning and AxisIndex of NcToPlc.
   void publish(int32_t index) noexcept {
-    plc::NCTOPLC_AXIS_REF& out = ref_.NcToPlc;
+    publish_to(ref_.NcToPlc, index);
+    published();
+  }
+  void publish_to(plc::NCTOPLC_AXIS_REF& out, int32_t index) const noexcept {
     out.ErrorCode = plc::to_id(error_);
     out.Warning = warnings.any() ? warnings.code() : 0;
     out.CmdNo = cmd_no_;
     out.CmdState = static_cast<uint16_t>(cmd_state_);
     out.AxisIndex = index;
   }
+  // Something publish_to() writes may have changed since published() (the error, the command
+  // executed or its state, a warning): a servo axis publishes those five only then.
+  bool changed() const noexcept { return changed_ || warnings.changed; }
+  void published() noexcept {
+    changed_ = false;
+    warnings.changed = false;
+  }
 
  private:
   uint16_t cmd_no_ = 0;  // the command the axis executes (or executed last)
   plc::CommandState cmd_state_ = plc::CommandState::kFree;
   plc::ErrorCode error_ = plc::ErrorCode::kNone;
+  bool changed_ = true;  // see changed()
 
  public:
   AxisWarnings warnings{};  // a part of its own: every axis part sets and clears them

@@ -50,21 +50,23 @@ struct BasicPath {
 
 struct AxisCore;
 
-// What phase (f) publishes that only events change (publish.cpp): the StateDWord bits of the job,
-// the homing, MC_Stop's lock and "has been stopped", the coupling, the superpositions and the C7
-// delay; the AxisState with the controller enabled and no error; CoupleState; and what the
-// constant-velocity bit needs of the job. AxisCore keeps one, renewed in the publish after
-// note_event(); event_image() computes it in full (the kept one must always equal it: the tests
-// and the fuzz watch compare the two every cycle, KernelAxes::published_image_consistent).
+// What phase (f) publishes that only events change (publish.cpp): the StateDWord bits of the
+// enables and the error, the job, the homing, MC_Stop's lock and "has been stopped", the
+// coupling, the superpositions and the C7 delay (kept here), and what the constant-velocity bit
+// needs of the job; event_image() also writes the NcToPlc fields that only events change
+// (AxisState, CoupleState, the compensation's values, TargetVelo and GearRatio but a coupled
+// slave's, the channel's five). AxisCore keeps one, renewed in the publish after note_event() or
+// a change of the channel; event_image() computes it in full (the kept one and the published
+// fields must always equal it: the tests and the fuzz watch compare them every cycle,
+// KernelAxes::published_image_consistent).
 struct EventImage {
   uint32_t state_bits = 0;
-  uint32_t axis_state = 0;  // plc::AxisState while enabled and without error
-  uint32_t couple_state = 0;
   JobKind job_kind = JobKind::kNone;
   double constant_acceleration = 0.0;  // |SetAcc| up to this counts as constant velocity
   bool operator==(const EventImage&) const noexcept = default;
 };
-EventImage event_image(const AxisCore& a) noexcept;
+// The one full recomputation: the image, with its NcToPlc fields written into `out`.
+EventImage event_image(const AxisCore& a, plc::NCTOPLC_AXIS_REF& out) noexcept;
 // The kept image is event_image() and the published NcToPlc shows it (the check; a two-speed
 // axis, which publishes in full, always passes). After a cycle, before the PLC writes PlcToNc.
 bool image_consistent(const AxisCore& a) noexcept;
@@ -140,6 +142,7 @@ struct AxisCore {
   // The axis errors raised, counted wrapping (the HLI phase: an error raised and reset between two
   // phases (c) still shows as a change).
   uint32_t errors_raised_ = 0;
+  uint32_t control_seen_ = 0;  // PlcToNc.ControlDWord as the last check_enables() read it
   plc::CoupleState hli_role_ = plc::CoupleState::kSingle;  // from phase (c), see there
   bool encoder_ = false;                                   // config_.kind == AxisKind::kEncoder
   bool drive_command_given_ = false;  // phase (c) gave drive_command_ in this cycle
@@ -148,7 +151,6 @@ struct AxisCore {
   bool locked_ = false;  // MC_Stop: motion commands refused until kStopRelease
   bool has_been_stopped_ = false;
   bool error_event_ = false;  // an error was raised in this cycle
-  bool enable_seen_ = false;  // the controller enable of the last check_enables()
   bool group_ready_ = false;  // see set_group_ready()
   bool by_hand_ = false;      // case 2 in force (follows_by_hand() latched)
   bool events_ = true;        // an event since image_ was computed (note_event())

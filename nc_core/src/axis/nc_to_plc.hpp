@@ -29,6 +29,7 @@ inline constexpr uint32_t kEventStateBits =
     (1U << plc::kStateHasBeenStopped) | (1U << plc::kStateHasJob) | (1U << plc::kStateHomingBusy) |
     (1U << plc::kStateCompensating) | (1U << plc::kStateExtSetPointGenEnabled) |
     (1U << plc::kStateCoupled) | (1U << plc::kStateContinuousMotion) | (1U << plc::kStatePtpMode) |
-    (1U << plc::kStateMotionCommandsLocked);
+    (1U << plc::kStateMotionCommandsLocked) | (1U << plc::kStateOperational) |
+    (1U << plc::kStateError);
 
 }  // namespace nc::detail

@@ -3,14 +3,18 @@
 // after note_event(), and the check that compares the two (docs/performance.md "Fourth pass").
 // Phase (f) itself, ServoAxis::phase_publish, is in servo_axis.cpp, so that it inlines into
 // the steady cycle.
+#include <cstring>
+
 #include "axis/nc_to_plc.hpp"
 #include "axis/servo_axis.hpp"
 
 namespace nc::detail {
 
-EventImage event_image(const AxisCore& a) noexcept {
+EventImage event_image(const AxisCore& a, plc::NCTOPLC_AXIS_REF& out) noexcept {
   using plc::AxisState;
   const JobKind kind = a.job_.kind();
+  const bool enabled = a.channel_.controller_enabled();
+  const bool error = a.channel_.has_error();
   // A gear slave, or an HLI target (a list in force); a gear master, or an HLI source.
   const bool slave = a.slave_link_.coupled || a.slave_link_.detached || a.hli_target();
   const bool master = a.slave_count_ > 0 || a.hli_source();
@@ -27,11 +31,16 @@ EventImage event_image(const AxisCore& a) noexcept {
   set_state_bit(word, plc::kStatePtpMode, true);
   set_state_bit(word, plc::kStateMotionCommandsLocked, a.locked_);
   set_state_bit(word, plc::kStateErrorPropagationDelayed, a.propagation_.delayed());  // C7 DELAYED
+  set_state_bit(word, plc::kStateOperational, enabled && !error);
+  set_state_bit(word, plc::kStateError, error);
 
-  // PLCopen state, in the priority of the PLCopen state diagram (ErrorStop and Disabled come
-  // first; phase_publish() decides them every cycle).
+  // PLCopen state, in the priority of the PLCopen state diagram.
   AxisState state = AxisState::kStandstill;
-  if (a.slave_link_.coupled || (a.hli_target() && kind == JobKind::kNone)) {
+  if (error) {
+    state = AxisState::kErrorStop;
+  } else if (!enabled) {
+    state = AxisState::kDisabled;
+  } else if (a.slave_link_.coupled || (a.hli_target() && kind == JobKind::kNone)) {
     // Also while the master stands still (issue 9); an HLI target's own job shows instead.
     state = AxisState::kSynchronizedMotion;
   } else if (a.homing_.active()) {
@@ -43,26 +52,32 @@ EventImage event_image(const AxisCore& a) noexcept {
   } else if (kind == JobKind::kVelocity) {
     state = AxisState::kContinuousMotion;
   }
-  image.axis_state = static_cast<uint32_t>(state);
-  image.couple_state = static_cast<uint32_t>(
-      slave ? (master ? plc::CoupleState::kMasterAndSlave : plc::CoupleState::kSlave)
-            : (master ? plc::CoupleState::kMaster : plc::CoupleState::kSingle));
   image.job_kind = kind;
   image.constant_acceleration = 1e-9 * a.job_.goal.limits().acceleration + 1e-12;
+
+  out.AxisState = static_cast<uint32_t>(state);
+  out.CoupleState = static_cast<uint32_t>(
+      slave ? (master ? plc::CoupleState::kMasterAndSlave : plc::CoupleState::kSlave)
+            : (master ? plc::CoupleState::kMaster : plc::CoupleState::kSingle));
+  out.CompensationDistance = a.stack_.compensation.done();  // travel-relative, as D
+  out.CompensationLength = a.stack_.compensation.length();
+  out.CompensationVelocityDiff = a.stack_.compensation.velocity_diff();
+  // A coupled slave's change in every cycle: phase_publish() writes them again then.
+  out.TargetVelo = a.target_velocity();
+  out.GearRatio = a.slave_link_.coupled ? a.slave_link_.factor : 0.0;
+  a.channel_.publish_to(out, static_cast<int32_t>(a.index_));
   return image;
 }
 
 bool image_consistent(const AxisCore& a) noexcept {
   if (a.two_speed_) return true;  // it publishes in full every cycle (two_speed_axis.cpp)
-  const EventImage fresh = event_image(a);
   const plc::NCTOPLC_AXIS_REF& out = a.channel_.ref().NcToPlc;
-  const bool free_state = a.channel_.controller_enabled() && !a.channel_.has_error();
+  // The recomputation writes its fields over a copy of what was published: every byte must stay.
+  plc::NCTOPLC_AXIS_REF fresh_out;
+  std::memcpy(&fresh_out, &out, sizeof out);
+  const EventImage fresh = event_image(a, fresh_out);
   return a.image_ == fresh && (out.StateDWord & kEventStateBits) == fresh.state_bits &&
-         (!free_state || out.AxisState == fresh.axis_state) &&
-         out.CoupleState == fresh.couple_state &&
-         out.CompensationDistance == a.stack_.compensation.done() &&
-         out.CompensationLength == a.stack_.compensation.length() &&
-         out.CompensationVelocityDiff == a.stack_.compensation.velocity_diff();
+         std::memcmp(&fresh_out, &out, sizeof out) == 0;
 }
 
 }  // namespace nc::detail

@@ -22,6 +22,166 @@ namespace nc::detail {
 
 using plc::CommandState;
 
+namespace {
+
+// The snapshot but the group reaction and what a master driving its slaves by its actual values
+// gives them (written by the phases): the target and the basic path, the set values (with the
+// jerk), the actual values, the error with its event and the enables, as the axis has them now
+// (ServoAxis::fill_snapshot()).
+void write_snapshot(const AxisCore& a, AxisSnapshot& snapshot) noexcept {
+  const BasicPath path = a.basic_path();
+  snapshot.target_position = a.target_;
+  snapshot.target_velocity = path.target_velocity;
+  snapshot.path_running = path.running;
+  snapshot.path_stopping = path.stopping;
+  snapshot.path_positioning = path.positioning;
+  snapshot.path_has_target = path.has_target;
+  snapshot.error = a.channel_.error();
+  snapshot.error_event = a.error_event_;
+  const uint32_t control = a.control_seen_;  // the enables of this cycle (PlcToNc may have changed)
+  snapshot.controller_enabled = plc::test_bit(control, plc::kControlEnable);
+  snapshot.feed_enabled_plus = plc::test_bit(control, plc::kControlFeedEnablePlus);
+  snapshot.feed_enabled_minus = plc::test_bit(control, plc::kControlFeedEnableMinus);
+  snapshot.set_position = a.set_.p;  // without the controller enable it follows the actual one
+  snapshot.set_velocity = a.set_.v;
+  snapshot.set_acceleration = a.set_.a;
+  snapshot.set_jerk = a.set_jerk_;
+  snapshot.actual_position = a.drive_.measured_position();
+  snapshot.actual_velocity = a.drive_.velocity();
+  snapshot.actual_acceleration = a.drive_.acceleration();
+}
+
+// The phases of a servo axis (not a two-speed one): the bodies of ServoAxis's phases, which hand a
+// two-speed axis over to its TwoSpeedAxis first. run_cycle_alone() looks at the kind once and
+// runs these (the check in each phase cost 14 instructions per axis-cycle, docs/performance.md
+// "Fifth pass").
+class ServoPhases : public AxisPart {
+ public:
+  using AxisPart::AxisPart;
+  void commands(CouplingPort& port) noexcept {
+    AxisCore& a = s_;
+    a.error_event_ = false;
+    a.drive_command_given_ = false;
+    OnlineChange(a).read_override();
+    AxisCommands(a).handle_commands(port);
+    AxisMonitoring(a).check_enables();
+    // command_buffer.cpp: a waiting command takes over; a pass left alone stops. Neither without
+    // a waiting command or a pass.
+    if (a.buffer_.waiting || a.job_.passing()) {
+      a.note_event();
+      BufferedCommands(a).run_buffer(port);
+    }
+    if (a.job_.is_motion()) {
+      OnlineChange(a).run_online_functions();  // only a motion job has online functions
+    }
+  }
+  void set_values(AxisSnapshot& snapshot, std::span<const AxisSnapshot> snapshots,
+                  bool shared) noexcept {
+    AxisCore& a = s_;
+    if (a.slave_link_.coupled) {
+      // Seed 000 §3.2.2: slave target velocity = coupling factor × master target velocity; the
+      // target position likewise (a compensation on the slave moves it on, seed 000 §3.2.4).
+      const AxisSnapshot& master = snapshots[a.slave_link_.master];
+      a.slave_path_ =
+          BasicPath{master.path_running,
+                    master.path_stopping,
+                    master.path_positioning,
+                    master.path_has_target,
+                    a.slave_link_.factor * master.target_position + a.slave_link_.offset,
+                    a.slave_link_.factor * master.target_velocity};
+      a.target_ = a.slave_path_.target;
+    }
+    AxisMotion(a).generate_set_values(snapshots);
+    // The set values and the path, read in this cycle by slaves and the HLI stage (after the
+    // cycle Kernel::snapshot() fills the snapshot in).
+    if (shared) write_snapshot(a, snapshot);
+    // C8: the filtered actual values instead (error_propagation.cpp); without slaves and a filter
+    // running it has nothing to do.
+    if (a.slave_count_ != 0 || a.actual_filter_.active) GroupErrors(a).publish_for_slaves(snapshot);
+  }
+  void drive() noexcept {
+    AxisCore& a = s_;
+    AxisMotion(a).control_and_drive();
+    a.previous_drive_position_ = a.drive_command().p;
+    // The set and actual values the snapshot shows after the cycle: no axis reads them in the
+    // rest of it, so Kernel::snapshot() fills them (fill_snapshot()).
+  }
+  void monitors(AxisSnapshot& snapshot, bool shared) noexcept {
+    AxisCore& a = s_;
+    AxisMonitoring(a).run_monitors();
+    AxisMonitoring(a).finish_job();
+    if (a.propagation_.pending) {
+      a.note_event();  // the C7 delay runs (StateDWord bit 6) and ends here
+      snapshot.group_reaction_due = GroupErrors(a).group_reaction_due();
+    } else {
+      snapshot.group_reaction_due = false;
+    }
+    // The group reactions read the errors and the enables (after the cycle Kernel::snapshot()
+    // fills the snapshot in).
+    if (shared) write_snapshot(a, snapshot);
+    // The precondition of SPEC C8 case 2 for the group of this axis alone; for the head of a larger
+    // group the kernel replaces it after the group reactions (Kernel::mark_ready_groups).
+    if (!a.slave_link_.coupled && !a.slave_link_.detached) {
+      a.group_ready_ =
+          !a.channel_.has_error() && plc::test_bit(a.control_seen_, plc::kControlEnable);
+    }
+  }
+  void publish(uint64_t cycle_counter) noexcept {
+    AxisCore& a = s_;
+    plc::NCTOPLC_AXIS_REF& out = a.channel_.ref().NcToPlc;
+    if (a.events_ || a.channel_.changed()) {
+      // Something the image shows may have changed since the last publish (note_event(), or the
+      // channel's error, command or warnings).
+      a.events_ = false;
+      a.channel_.published();
+      a.image_ = event_image(a, out);
+    }
+    if (a.slave_link_.coupled) {  // the master's target velocity and a cyclic factor: every cycle
+      out.TargetVelo = a.slave_path_.target_velocity;
+      out.GearRatio = a.slave_link_.factor;
+    }
+    const double actual = a.drive_.measured_position();
+
+    const KinematicState& command = a.drive_command();  // d: the set values phase (d) controls to
+    out.SetPos = command.p;
+    out.SetVelo = command.v;
+    out.SetAcc = command.a;
+    out.SetJerk = a.set_jerk_;
+    out.ActPos = actual;
+    out.ActVelo = a.drive_.velocity();
+    out.ActAcc = a.drive_.acceleration();
+    out.PosDiff = command.p - actual;
+    out.ModuloActPos = modulo_position(actual, a.modulo_factor_);
+    out.ModuloSetPos = modulo_position(command.p, a.modulo_factor_);
+    out.TargetPos = a.target_;
+    out.CycleCounter = static_cast<uint32_t>(cycle_counter);
+
+    // Constant velocity: a velocity job at its level, or the cruise phase of a positioning.
+    const JobKind kind = a.image_.job_kind;
+    const bool constant_velocity =
+        (kind == JobKind::kVelocity && a.job_.table.velocity_reached()) ||
+        (kind == JobKind::kPosition && !a.job_.table.generation_ended() && a.set_.v != 0.0 &&
+         std::abs(a.set_.a) <= a.image_.constant_acceleration && a.set_jerk_ == 0.0);
+
+    uint32_t word = a.image_.state_bits;
+    set_state_bit(word, plc::kStateNotMoving, std::abs(a.drive_.velocity()) < a.standstill_window_);
+    set_state_bit(word, plc::kStateInPositionArea, a.monitors_.in_position_area());
+    set_state_bit(word, plc::kStateInTargetPosition, a.monitors_.in_target_position());
+    set_state_bit(word, plc::kStatePositiveDirection, a.set_.v > 0.0);
+    set_state_bit(word, plc::kStateNegativeDirection, a.set_.v < 0.0);
+    set_state_bit(word, plc::kStateConstantVelocity, constant_velocity);
+    set_state_bit(word, plc::kStateSoftLimitMinExceeded, a.monitors_.below_min(actual));
+    set_state_bit(word, plc::kStateSoftLimitMaxExceeded, a.monitors_.above_max(actual));
+    out.StateDWord = word;
+#ifdef NCSDK_CHECK_EVENT_IMAGE
+    // A check build (-DNCSDK_CHECK_EVENT_IMAGE): a missed note_event() stops the program here.
+    if (!image_consistent(a)) std::abort();
+#endif
+  }
+};
+
+}  // namespace
+
 ServoAxis::ServoAxis(const AxisConfig& config, double cycle_time, std::size_t index,
                      Profile& scratch)
     : AxisCore(config, cycle_time, index, scratch) {
@@ -44,126 +204,38 @@ ServoAxis::ServoAxis(const AxisConfig& config, double cycle_time, std::size_t in
 
 void ServoAxis::phase_commands(CouplingPort& port) noexcept {
   if (two_speed_) return two_speed_->phase_commands();
-  error_event_ = false;
-  drive_command_given_ = false;
-  OnlineChange(*this).read_override();
-  AxisCommands(*this).handle_commands(port);
-  AxisMonitoring(*this).check_enables();
-  // command_buffer.cpp: a waiting command takes over; a pass left alone stops. Neither without
-  // a waiting command or a pass.
-  if (buffer_.waiting || job_.passing()) {
-    note_event();
-    BufferedCommands(*this).run_buffer(port);
-  }
-  if (job_.is_motion()) {
-    OnlineChange(*this).run_online_functions();  // only a motion job has online functions
-  }
+  ServoPhases(*this).commands(port);
 }
 
 // Flattened: the phases and their parts in this file inline into one function, so the steady
 // path of an axis's cycle is one body (docs/performance.md "Fourth pass": 68 instructions per
-// axis-cycle fewer than five calls).
+// axis-cycle fewer than five calls); the axis's kind is looked at once ("Fifth pass").
 [[gnu::flatten]] void ServoAxis::run_cycle_alone(CouplingPort& port, AxisSnapshot& snapshot,
                                                  std::span<const AxisSnapshot> snapshots,
                                                  uint64_t cycle_counter) noexcept {
-  phase_commands(port);
-  run_alone(snapshot, snapshots, cycle_counter);
+  if (two_speed_) {
+    phase_commands(port);
+    run_alone(snapshot, snapshots, cycle_counter);
+    return;
+  }
+  ServoPhases phases(*this);
+  phases.commands(port);
+  phases.set_values(snapshot, snapshots, false);
+  phases.drive();
+  phases.monitors(snapshot, false);
+  phases.publish(cycle_counter);
 }
 
-void ServoAxis::phase_set_values(AxisSnapshot& snapshot,
-                                 std::span<const AxisSnapshot> snapshots) noexcept {
+void ServoAxis::phase_set_values(AxisSnapshot& snapshot, std::span<const AxisSnapshot> snapshots,
+                                 bool shared) noexcept {
   if (two_speed_) return two_speed_->phase_set_values(snapshot);
-  if (slave_link_.coupled) {
-    // Seed 000 §3.2.2: slave target velocity = coupling factor × master target velocity; the
-    // target position likewise (a compensation on the slave moves it on, seed 000 §3.2.4).
-    const AxisSnapshot& master = snapshots[slave_link_.master];
-    slave_path_ = BasicPath{master.path_running,
-                            master.path_stopping,
-                            master.path_positioning,
-                            master.path_has_target,
-                            slave_link_.factor * master.target_position + slave_link_.offset,
-                            slave_link_.factor * master.target_velocity};
-    target_ = slave_path_.target;
-  }
-  AxisMotion(*this).generate_set_values(snapshots);
-  const BasicPath path = basic_path();
-  snapshot.target_position = target_;
-  snapshot.target_velocity = path.target_velocity;
-  snapshot.path_running = path.running;
-  snapshot.path_stopping = path.stopping;
-  snapshot.path_positioning = path.positioning;
-  snapshot.path_has_target = path.has_target;
-  snapshot.set_position = set_.p;
-  snapshot.set_velocity = set_.v;
-  snapshot.set_acceleration = set_.a;
-  snapshot.set_jerk = set_jerk_;
-  // C8: the filtered actual values instead (error_propagation.cpp); without slaves and a filter
-  // running it has nothing to do.
-  if (slave_count_ != 0 || actual_filter_.active) GroupErrors(*this).publish_for_slaves(snapshot);
+  ServoPhases(*this).set_values(snapshot, snapshots, shared);
 }
 
 // Phase (f): the NC→PLC image; what only events change comes from image_ (publish.cpp).
 void ServoAxis::phase_publish(uint64_t cycle_counter) noexcept {
   if (two_speed_) return two_speed_->phase_publish(cycle_counter, static_cast<int32_t>(index_));
-  plc::NCTOPLC_AXIS_REF& out = channel_.ref().NcToPlc;
-  if (events_) {
-    // Something the image shows may have changed since the last publish (note_event()).
-    events_ = false;
-    image_ = event_image(*this);
-    out.CoupleState = image_.couple_state;
-    out.CompensationDistance = stack_.compensation.done();  // travel-relative, as D
-    out.CompensationLength = stack_.compensation.length();
-    out.CompensationVelocityDiff = stack_.compensation.velocity_diff();
-  }
-#ifdef NCSDK_CHECK_EVENT_IMAGE
-  // A check build (-DNCSDK_CHECK_EVENT_IMAGE): a missed note_event() stops the program here.
-  if (!(image_ == event_image(*this))) std::abort();
-#endif
-  const double actual = drive_.measured_position();
-  const bool enabled = channel_.controller_enabled();
-  const bool error = channel_.has_error();
-
-  const KinematicState& command = drive_command();  // d: the set values phase (d) controls to
-  out.SetPos = command.p;
-  out.SetVelo = command.v;
-  out.SetAcc = command.a;
-  out.SetJerk = set_jerk_;
-  out.ActPos = actual;
-  out.ActVelo = drive_.velocity();
-  out.ActAcc = drive_.acceleration();
-  out.PosDiff = command.p - actual;
-  out.ModuloActPos = modulo_position(actual, modulo_factor_);
-  out.ModuloSetPos = modulo_position(command.p, modulo_factor_);
-  out.TargetPos = target_;
-  out.TargetVelo = target_velocity();
-  channel_.publish(static_cast<int32_t>(index_));
-  out.GearRatio = slave_link_.coupled ? slave_link_.factor : 0.0;
-  out.CycleCounter = static_cast<uint32_t>(cycle_counter);
-
-  // Constant velocity: a velocity job at its level, or the cruise phase of a positioning.
-  const JobKind kind = image_.job_kind;
-  const bool constant_velocity =
-      (kind == JobKind::kVelocity && job_.table.velocity_reached()) ||
-      (kind == JobKind::kPosition && !job_.table.generation_ended() && set_.v != 0.0 &&
-       std::abs(set_.a) <= image_.constant_acceleration && set_jerk_ == 0.0);
-
-  uint32_t word = image_.state_bits;
-  set_state_bit(word, plc::kStateOperational, enabled && !error);
-  set_state_bit(word, plc::kStateNotMoving, std::abs(drive_.velocity()) < standstill_window_);
-  set_state_bit(word, plc::kStateInPositionArea, monitors_.in_position_area());
-  set_state_bit(word, plc::kStateInTargetPosition, monitors_.in_target_position());
-  set_state_bit(word, plc::kStatePositiveDirection, set_.v > 0.0);
-  set_state_bit(word, plc::kStateNegativeDirection, set_.v < 0.0);
-  set_state_bit(word, plc::kStateConstantVelocity, constant_velocity);
-  set_state_bit(word, plc::kStateSoftLimitMinExceeded, monitors_.below_min(actual));
-  set_state_bit(word, plc::kStateSoftLimitMaxExceeded, monitors_.above_max(actual));
-  set_state_bit(word, plc::kStateError, error);
-  out.StateDWord = word;
-
-  // PLCopen state: ErrorStop and Disabled before the image's.
-  out.AxisState = error      ? static_cast<uint32_t>(plc::AxisState::kErrorStop)
-                  : !enabled ? static_cast<uint32_t>(plc::AxisState::kDisabled)
-                             : image_.axis_state;
+  ServoPhases(*this).publish(cycle_counter);
 }
 
 void ServoAxis::phase_drive_command(const KinematicState& drive, ErrorCode stop,
@@ -179,46 +251,29 @@ void ServoAxis::phase_drive_command(const KinematicState& drive, ErrorCode stop,
 
 void ServoAxis::phase_drive(AxisSnapshot& snapshot) noexcept {
   if (two_speed_) return two_speed_->phase_drive(snapshot);
-  AxisMotion(*this).control_and_drive();
-  previous_drive_position_ = drive_command().p;
-  snapshot.set_position = set_.p;  // without the controller enable it follows the actual one
-  snapshot.set_velocity = set_.v;
-  snapshot.set_acceleration = set_.a;
-  snapshot.actual_position = drive_.measured_position();
-  snapshot.actual_velocity = drive_.velocity();
-  snapshot.actual_acceleration = drive_.acceleration();
+  ServoPhases(*this).drive();
 }
 
-void ServoAxis::phase_monitors(AxisSnapshot& snapshot) noexcept {
+void ServoAxis::fill_snapshot(AxisSnapshot& snapshot) const noexcept {
+  if (two_speed_) return;  // its phases write them
+  write_snapshot(*this, snapshot);
+}
+
+void ServoAxis::phase_monitors(AxisSnapshot& snapshot, bool shared) noexcept {
   if (two_speed_) return two_speed_->phase_monitors(snapshot);
-  AxisMonitoring(*this).run_monitors();
-  AxisMonitoring(*this).finish_job();
-  snapshot.error = channel_.error();
-  snapshot.error_event = error_event_;
-  if (propagation_.pending) {
-    note_event();  // the C7 delay runs (StateDWord bit 6) and ends here
-    snapshot.group_reaction_due = GroupErrors(*this).group_reaction_due();
-  } else {
-    snapshot.group_reaction_due = false;
-  }
-  const uint32_t control = channel_.ref().PlcToNc.ControlDWord;
-  snapshot.controller_enabled = plc::test_bit(control, plc::kControlEnable);
-  snapshot.feed_enabled_plus = plc::test_bit(control, plc::kControlFeedEnablePlus);
-  snapshot.feed_enabled_minus = plc::test_bit(control, plc::kControlFeedEnableMinus);
-  // The precondition of SPEC C8 case 2 for the group of this axis alone; for the head of a larger
-  // group the kernel replaces it after the group reactions (Kernel::mark_ready_groups).
-  if (!slave_link_.coupled && !slave_link_.detached) {
-    group_ready_ = snapshot.error == ErrorCode::kNone && snapshot.controller_enabled;
-  }
+  ServoPhases(*this).monitors(snapshot, shared);
 }
 
 // --- AxisMonitoring ---
 
 void AxisMonitoring::check_enables() noexcept {
   AxisCore& a = s_;  // held in a register: no reload of s_ after each store
-  const bool enabled = a.channel_.controller_enabled();
-  const bool lost = a.enable_seen_ && !enabled;
-  a.enable_seen_ = enabled;
+  const uint32_t control = a.channel_.ref().PlcToNc.ControlDWord;
+  const bool enabled = plc::test_bit(control, plc::kControlEnable);
+  const bool seen = plc::test_bit(a.control_seen_, plc::kControlEnable);
+  const bool lost = seen && !enabled;
+  if (enabled != seen) a.note_event();  // StateDWord's Operational, AxisState
+  a.control_seen_ = control;
   if (a.slave_count_ == 0) {  // no group to follow this axis: never case 2 (follows_by_hand())
     GroupErrors(a).end_by_hand();
   } else {

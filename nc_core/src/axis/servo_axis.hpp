@@ -47,7 +47,9 @@ class ServoAxis : private AxisCore {
   // calls each for every axis before the next. The snapshot is what other axes may read.
   void phase_commands(CouplingPort& port) noexcept;  // (a)
   // (b); `snapshots`: every axis's, a slave reads its master's (computed before it this cycle).
-  void phase_set_values(AxisSnapshot& snapshot, std::span<const AxisSnapshot> snapshots) noexcept;
+  // `shared`: other axes read this cycle's set values (false: no axis reads another).
+  void phase_set_values(AxisSnapshot& snapshot, std::span<const AxisSnapshot> snapshots,
+                        bool shared = true) noexcept;
   // (c) HLI coupling (SPEC D3), called only while the kernel's coupling stage is engaged: the
   // set values phase (d) controls to this cycle (NcToPlc.SetPos; without a call they are the
   // program's set values), and `stop` != kNone raises that axis error (program on its emergency
@@ -56,16 +58,21 @@ class ServoAxis : private AxisCore {
   // master), kept until the next call, for CoupleState and the refusal of external setpoints.
   void phase_drive_command(const KinematicState& drive, ErrorCode stop,
                            plc::CoupleState role) noexcept;
-  void phase_drive(AxisSnapshot& snapshot) noexcept;     // (d)
-  void phase_monitors(AxisSnapshot& snapshot) noexcept;  // (e)
-  void phase_publish(uint64_t cycle_counter) noexcept;   // (f)
+  void phase_drive(AxisSnapshot& snapshot) noexcept;  // (d)
+  // The axis as the cycle left it into `snapshot` (all but the group reaction and a C8 master's
+  // filtered values, which its phases write): Kernel::snapshot(). A servo axis's phases write the
+  // snapshot only when `shared` (some axis reads another this cycle).
+  void fill_snapshot(AxisSnapshot& snapshot) const noexcept;
+  // (e); `shared`: the group reactions read the snapshot's errors and enables this cycle.
+  void phase_monitors(AxisSnapshot& snapshot, bool shared = true) noexcept;
+  void phase_publish(uint64_t cycle_counter) noexcept;  // (f)
   // Phases (b), (d), (e), (f) one after the other, for a kernel in which no axis reads another
   // (no coupling, HLI stage not engaged): the same as the kernel's phase loops.
   void run_alone(AxisSnapshot& snapshot, std::span<const AxisSnapshot> snapshots,
                  uint64_t cycle_counter) noexcept {
-    phase_set_values(snapshot, snapshots);
+    phase_set_values(snapshot, snapshots, false);
     phase_drive(snapshot);
-    phase_monitors(snapshot);
+    phase_monitors(snapshot, false);
     phase_publish(cycle_counter);
   }
   // Phase (a), then run_alone(): the kernel's loop while no axis reads another, in one call.
@@ -84,8 +91,8 @@ class ServoAxis : private AxisCore {
 
 // Asks for the lines a steady cycle of `axis` reads (axis_core.hpp: the hot members up to the
 // homing's phase, the stack's and the channel's first lines, the job with its profile's header,
-// the buffer's flag) and its snapshot, so that the kernel fetches the next axes' data while it
-// runs this one.
+// the buffer's flag) and its snapshot's group reaction, so that the kernel fetches the next axes'
+// data while it runs this one.
 [[gnu::always_inline]] inline void prefetch_cycle_data(const ServoAxis& axis,
                                                        const AxisSnapshot& snapshot) noexcept {
   const AxisCore& a = axis.core();
@@ -95,7 +102,7 @@ class ServoAxis : private AxisCore {
   prefetch_lines(&a.channel_, 256);
   prefetch_lines(&a.job_, 256);
   prefetch_lines(&a.buffer_.waiting, 1);
-  prefetch_lines(&snapshot, sizeof(AxisSnapshot));
+  prefetch_lines(&snapshot.group_reaction_due, 1);  // the steady cycle writes only this
 }
 
 }  // namespace nc::detail

@@ -50,6 +50,10 @@ std::span<plc::hli::HLI_AX* const> KernelAxes::gpAx() const noexcept {
 double KernelAxes::command_position_request(int ax_nr) const noexcept {
   return hli_->command_position_request(ax_nr, axes_);
 }
+const AxisSnapshot& KernelAxes::snapshot(std::size_t index) const noexcept {
+  axes_[index]->fill_snapshot(snapshots_[index]);
+  return snapshots_[index];
+}
 bool KernelAxes::published_image_consistent(std::size_t index) const noexcept {
   return image_consistent(axes_[index]->core());
 }

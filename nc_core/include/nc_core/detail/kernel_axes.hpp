@@ -47,8 +47,10 @@ class KernelAxes {
   // ConfigError when there is no such axis or it is not of kind kTwoSpeed.
   const plc::NCTOIO_DRIVE_TWO_SPEED& two_speed_output(std::string_view name) const;
 
-  // What axis `index` published to the other axes in the last cycle. Unchecked index.
-  const AxisSnapshot& snapshot(std::size_t index) const noexcept { return snapshots_[index]; }
+  // Axis `index` as the last cycle left it, in the form other axes read it in a cycle (filled in
+  // here: a cycle writes snapshots only while some axis reads another). Unchecked index. Between
+  // cycles, not concurrently with cycle().
+  const AxisSnapshot& snapshot(std::size_t index) const noexcept;
   // Who follows whom (the MC_GearIn / MC_GearInDyn couplings in force).
   const CouplingGraph& couplings() const noexcept { return couplings_; }
 
@@ -59,9 +61,10 @@ class KernelAxes {
   // (AxisConfig::id) now: the drive position by default, solved through its list with
   // P-AXIS-00436 / 00460. NaN for an unknown axis number.
   double command_position_request(int ax_nr) const noexcept;
-  // The check of the steady cycle's kept image (docs/performance.md "Fourth pass"): what axis
-  // `index` published in the last cycle that only events change (StateDWord bits, AxisState,
-  // CoupleState, the compensation's values) equals its full recomputation now. For tests and the
+  // The check of the steady cycle's kept image (docs/performance.md "Fourth pass", "Fifth
+  // pass"): what axis `index` published in the last cycle that only events change (StateDWord
+  // bits, AxisState, CoupleState, the compensation's values, TargetVelo, GearRatio, ErrorCode,
+  // Warning, CmdNo, CmdState, AxisIndex) equals its full recomputation now. For tests and the
   // fuzz watch, between a cycle and the PLC's next writes. Unchecked index.
   bool published_image_consistent(std::size_t index) const noexcept;
 
@@ -72,7 +75,7 @@ class KernelAxes {
   ServoAxis& find(std::string_view name) const;
 
   std::vector<std::unique_ptr<ServoAxis>> axes_;
-  std::vector<AxisSnapshot> snapshots_;
+  mutable std::vector<AxisSnapshot> snapshots_;  // snapshot() fills in the motion values
   CouplingGraph couplings_;
   std::vector<uint8_t> group_ready_;  // scratch of Kernel::mark_ready_groups(), one per axis
   // Phase (c): the HLI coupling stage (on the heap: its control units keep their addresses).
