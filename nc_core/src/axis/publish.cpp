@@ -73,11 +73,14 @@ bool image_consistent(const AxisCore& a) noexcept {
   if (a.two_speed_) return true;  // it publishes in full every cycle (two_speed_axis.cpp)
   const plc::NCTOPLC_AXIS_REF& out = a.channel_.ref().NcToPlc;
   // The recomputation writes its fields over a copy of what was published: every byte must stay.
+  // Bytes, not values, on purpose: the copy's padding is the published one's, and a -0.0 where
+  // 0.0 was published (or another NaN) is a difference the PLC could see.
   plc::NCTOPLC_AXIS_REF fresh_out;
   std::memcpy(&fresh_out, &out, sizeof out);
   const EventImage fresh = event_image(a, fresh_out);
-  return a.image_ == fresh && (out.StateDWord & kEventStateBits) == fresh.state_bits &&
-         std::memcmp(&fresh_out, &out, sizeof out) == 0;
+  // NOLINTNEXTLINE(bugprone-suspicious-memory-comparison): bytes on purpose (above)
+  const bool same_bytes = std::memcmp(&fresh_out, &out, sizeof out) == 0;
+  return a.image_ == fresh && (out.StateDWord & kEventStateBits) == fresh.state_bits && same_bytes;
 }
 
 }  // namespace nc::detail
