@@ -114,13 +114,18 @@ struct SteadyAxes {
     out.TargetPos = x.target[i];
     out.TargetVelo = x.v0[i];
     out.CycleCounter = counter;
-    uint32_t word = out.StateDWord & ~0x1314U;
-    word |= static_cast<uint32_t>(std::fabs(velocity) < 0.001) << 2U;
-    word |= static_cast<uint32_t>(in_target) << 4U;
-    word |= static_cast<uint32_t>(v > 0.0) << 8U;
-    word |= static_cast<uint32_t>(v < 0.0) << 9U;
-    word |= static_cast<uint32_t>(a == 0.0 && j == 0.0 && v != 0.0) << 12U;
-    out.StateDWord = word;
+    const auto bit = [](bool value, plc::StateBit at) {
+      return static_cast<uint32_t>(value) << static_cast<uint32_t>(at);
+    };
+    constexpr uint32_t kPerCycle =
+        (1U << plc::kStateNotMoving) | (1U << plc::kStateInTargetPosition) |
+        (1U << plc::kStatePositiveDirection) | (1U << plc::kStateNegativeDirection) |
+        (1U << plc::kStateConstantVelocity);
+    out.StateDWord =
+        (out.StateDWord & ~kPerCycle) | bit(std::fabs(velocity) < 0.001, plc::kStateNotMoving) |
+        bit(in_target, plc::kStateInTargetPosition) | bit(v > 0.0, plc::kStatePositiveDirection) |
+        bit(v < 0.0, plc::kStateNegativeDirection) |
+        bit(a == 0.0 && j == 0.0 && v != 0.0, plc::kStateConstantVelocity);
   }
 }
 
