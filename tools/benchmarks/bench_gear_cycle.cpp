@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "axis_cycle_counters.hpp"
 #include "back_and_forth.hpp"
 #include "nc_core/kernel.hpp"
 
@@ -55,10 +56,7 @@ void run(benchmark::State& state, bool pairs) {
     }
     kernel.cycle();
   }
-  state.counters["axes"] = static_cast<double>(n);
-  state.counters["per_axis_cycle"] =
-      benchmark::Counter(static_cast<double>(state.iterations()) * static_cast<double>(n),
-                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  bench::count_axis_cycles(state, n);
 }
 
 void BM_MastersAlone(benchmark::State& state) {

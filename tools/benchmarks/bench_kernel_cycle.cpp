@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "axis_cycle_counters.hpp"
 #include "back_and_forth.hpp"
 #include "fb/fb.hpp"
 #include "nc_core/kernel.hpp"
@@ -41,10 +42,7 @@ void BM_KernelCycle(benchmark::State& state) {
       moves.step(*axes[i], i);
     kernel.cycle();
   }
-  state.counters["axes"] = static_cast<double>(n);
-  state.counters["per_axis_cycle"] =
-      benchmark::Counter(static_cast<double>(state.iterations()) * static_cast<double>(n),
-                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  bench::count_axis_cycles(state, n);
 }
 
 // The kernel plus each axis's MC_Power and MC_MoveAbsolute, called every cycle as a PLC would.
@@ -77,10 +75,7 @@ void BM_KernelCycleWithBlocks(benchmark::State& state) {
     }
     kernel.cycle();
   }
-  state.counters["axes"] = static_cast<double>(n);
-  state.counters["per_axis_cycle"] =
-      benchmark::Counter(static_cast<double>(state.iterations()) * static_cast<double>(n),
-                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  bench::count_axis_cycles(state, n);
 }
 
 }  // namespace

@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "axis_cycle_counters.hpp"
 #include "plc_interface/axis_ref.hpp"
 
 namespace {
@@ -139,10 +140,7 @@ void BM_SteadyCycleFloor(benchmark::State& state) {
     benchmark::ClobberMemory();
   }
   benchmark::DoNotOptimize(events);
-  state.counters["axes"] = static_cast<double>(n);
-  state.counters["per_axis_cycle"] =
-      benchmark::Counter(static_cast<double>(state.iterations()) * static_cast<double>(n),
-                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  bench::count_axis_cycles(state, n);
 }
 
 }  // namespace
