@@ -405,7 +405,9 @@ void AxisMonitoring::finish_job() noexcept {
   // must not answer CmdNo, which may be a command already answered (fuzz finding K12). Asked
   // as the cycle's monitors left the channel: before a homing's Done, else when a job ends
   // (nothing between here and there answers).
-  const bool homing_done = !kQuiet && a.homing_.finished();
+  // (Not a constant in the quiet body, so that the lambda's captures stay the same in both.)
+  bool homing_done = false;
+  if constexpr (!kQuiet) homing_done = a.homing_.finished();
   const bool own_before_homing = homing_done && a.channel_.runs(a.job_.number());
   const auto own = [&a, homing_done, own_before_homing]() noexcept {
     return homing_done ? own_before_homing : a.channel_.runs(a.job_.number());
