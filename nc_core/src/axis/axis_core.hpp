@@ -63,7 +63,8 @@ struct EventImage {
   uint32_t state_bits = 0;
   JobKind job_kind = JobKind::kNone;
   // A homing, a superposition (compensation, external generation, held offset) or the C8 filter
-  // runs: the steady cycle takes the full body of its phases (servo_axis.cpp, run_cycle_alone).
+  // runs: the steady cycle takes the full body of its phases (servo_axis.cpp,
+  // ServoPhases::cycle_alone).
   bool rare = false;
   double constant_acceleration = 0.0;  // |SetAcc| up to this counts as constant velocity
   bool operator==(const EventImage&) const noexcept = default;
@@ -81,7 +82,7 @@ struct AxisCore {
 
   // The one basic source of this cycle (set_value_source.hpp). `may_be_coupled` false: the caller
   // knows the axis is no coupled slave; `quiet`: no homing and no external generation runs
-  // (ServoPhases in run_cycle_alone); those tests are left out.
+  // (ServoPhases::cycle_alone); those tests are left out.
   SetValueSource source(bool may_be_coupled = true, bool quiet = false) const noexcept;
   // The motion a new job, a stop or the error ramp takes over (its limits, K4, K5, K8): the
   // running homing's, else the job's.

@@ -15,8 +15,8 @@ class AxisMonitoring : public AxisPart {
  public:
   using AxisPart::AxisPart;
 
-  // `kAlone`: called in run_cycle_alone(), where nothing is coupled and phase (c) gives no drive
-  // command (servo_axis.cpp, ServoPhases).
+  // `kAlone`: called in ServoPhases::cycle_alone(), where nothing is coupled and phase (c) gives no
+  // drive command (servo_axis.cpp, ServoPhases).
   template <bool kAlone>
   void check_enables() noexcept;
   // Inlined into the monitor phase (only servo_axis.cpp calls them).

@@ -1,8 +1,8 @@
 // The phases of the NC cycle for one axis (the kernel runs each over all axes), the NC→PLC image
 // of phase (f) (SPEC A7), and the two parts they call in every cycle, kept in this file so that
 // they inline into the phases: AxisMotion (set values, position control, drive) and
-// AxisMonitoring (enables, monitors, job completion) (SPEC A3, A4, A6). run_cycle_alone() is
-// all of one axis's cycle in one function (docs/performance.md "Fourth pass").
+// AxisMonitoring (enables, monitors, job completion) (SPEC A3, A4, A6). run_cycles_alone() is
+// all of the axes' cycle in one function (docs/performance.md "Fourth pass", "Sixth pass").
 #include "axis/servo_axis.hpp"
 
 #include <cmath>
@@ -52,7 +52,8 @@ void write_snapshot(const AxisCore& a, AxisSnapshot& snapshot) noexcept {
 }
 
 // The set values phase (d) controls to: phase (c)'s drive command when given this cycle, else the
-// program's. `kAlone`: in run_cycle_alone() (HLI stage not engaged), where it is never given.
+// program's. `kAlone`: in ServoAxis::run_cycles_alone() (HLI stage not engaged), where it is never
+// given.
 template <bool kAlone>
 const KinematicState& drive_command(const AxisCore& a) noexcept {
   if constexpr (kAlone) return a.set_;
@@ -60,15 +61,15 @@ const KinematicState& drive_command(const AxisCore& a) noexcept {
 }
 
 // The phases of a servo axis (not a two-speed one): the bodies of ServoAxis's phases, which hand a
-// two-speed axis over to its TwoSpeedAxis first. run_cycle_alone() looks at the kind once and
+// two-speed axis over to its TwoSpeedAxis first. run_cycles_alone() looks at the kind once and
 // runs these (the check in each phase cost 14 instructions per axis-cycle, docs/performance.md
 // "Fifth pass").
-// `kAlone`: the bodies for run_cycle_alone(), which the kernel runs only while nothing is coupled,
+// `kAlone`: the bodies for cycle_alone(), which the kernel runs only while nothing is coupled,
 // no coupling command waits and the HLI stage is not engaged; there no axis is a coupled or
 // detached slave or has slaves, and phase (c) gives no drive command, so those tests are left out
-// (docs/performance.md "Sixth pass"). `kQuiet`: the bodies of phases (b) to (f) for an axis in
+// (docs/performance.md "Sixth pass"). `kQuiet`: the bodies of phases (b) to (e) for an axis in
 // no rare state (EventImage::rare: no homing, no superposition, no C8 filter), which only phase
-// (a) could start; run_cycle_alone() chooses them after phase (a) when nothing has happened
+// (a) could start; cycle_alone() chooses them after phase (a) when nothing has happened
 // since the last publish.
 class ServoPhases : public AxisPart {
  public:
@@ -201,6 +202,32 @@ class ServoPhases : public AxisPart {
     if (!image_consistent(a)) std::abort();
 #endif
   }
+  // Phases (a) to (f) in ServoAxis::run_cycles_alone().
+  void cycle_alone(CouplingPort& port, AxisSnapshot& snapshot,
+                   std::span<const AxisSnapshot> snapshots, uint64_t cycle_counter) noexcept {
+    AxisCore& a = s_;
+#ifdef NCSDK_CHECK_EVENT_IMAGE
+    // A check build: what the kAlone bodies take as known holds.
+    if (a.slave_link_.coupled || a.slave_link_.detached || a.slave_count_ != 0) std::abort();
+#endif
+    commands<true>(port);
+    // Nothing happened since the last publish (its image says no rare state runs) and phase (a)
+    // started nothing: the quiet bodies.
+    if (a.events_ || a.image_.rare || a.channel_.changed()) {
+      set_values<true>(snapshot, snapshots, false);
+      drive<true>();
+      monitors<true>(snapshot, false);
+    } else {
+#ifdef NCSDK_CHECK_EVENT_IMAGE
+      // A check build: what the quiet bodies take as known holds.
+      if (a.homing_.active() || !a.stack_.empty() || a.actual_filter_.active) std::abort();
+#endif
+      set_values<true, true>(snapshot, snapshots, false);
+      drive<true>();
+      monitors<true, true>(snapshot, false);
+    }
+    publish<true>(cycle_counter);
+  }
 };
 
 }  // namespace
@@ -256,40 +283,14 @@ constexpr std::size_t kPrefetchAhead = 2;
     if (i + kPrefetchAhead < n) {
       prefetch_cycle_data(*axis[i + kPrefetchAhead], snapshot[i + kPrefetchAhead]);
     }
-    axis[i]->run_cycle_alone(port, snapshot[i], all, cycle_counter);
+    ServoAxis& s = *axis[i];
+    if (s.two_speed_) {
+      s.phase_commands(port);
+      s.run_alone(snapshot[i], all, cycle_counter);
+    } else {
+      ServoPhases(s).cycle_alone(port, snapshot[i], all, cycle_counter);
+    }
   }
-}
-
-void ServoAxis::run_cycle_alone(CouplingPort& port, AxisSnapshot& snapshot,
-                                std::span<const AxisSnapshot> snapshots,
-                                uint64_t cycle_counter) noexcept {
-  if (two_speed_) {
-    phase_commands(port);
-    run_alone(snapshot, snapshots, cycle_counter);
-    return;
-  }
-#ifdef NCSDK_CHECK_EVENT_IMAGE
-  // A check build: what the kAlone bodies take as known (ServoPhases) holds.
-  if (slave_link_.coupled || slave_link_.detached || slave_count_ != 0) std::abort();
-#endif
-  ServoPhases phases(*this);
-  phases.commands<true>(port);
-  // Nothing happened since the last publish (its image says no rare state runs) and phase (a)
-  // started nothing: the quiet bodies.
-  if (events_ || image_.rare || channel_.changed()) {
-    phases.set_values<true>(snapshot, snapshots, false);
-    phases.drive<true>();
-    phases.monitors<true>(snapshot, false);
-  } else {
-#ifdef NCSDK_CHECK_EVENT_IMAGE
-    // A check build: what the quiet bodies take as known holds.
-    if (homing_.active() || !stack_.empty() || actual_filter_.active) std::abort();
-#endif
-    phases.set_values<true, true>(snapshot, snapshots, false);
-    phases.drive<true>();
-    phases.monitors<true, true>(snapshot, false);
-  }
-  phases.publish<true>(cycle_counter);
 }
 
 void ServoAxis::phase_set_values(AxisSnapshot& snapshot, std::span<const AxisSnapshot> snapshots,

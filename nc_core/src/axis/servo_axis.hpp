@@ -81,11 +81,6 @@ class ServoAxis : private AxisCore {
   static void run_cycles_alone(std::span<const std::unique_ptr<ServoAxis>> axes,
                                std::span<AxisSnapshot> snapshots, CouplingPort& port,
                                uint64_t cycle_counter) noexcept;
-
- private:
-  // One axis of run_cycles_alone().
-  void run_cycle_alone(CouplingPort& port, AxisSnapshot& snapshot,
-                       std::span<const AxisSnapshot> snapshots, uint64_t cycle_counter) noexcept;
 };
 
 // Asks the CPU for the cache lines from `from` to `from + bytes` (a hint: no effect on a value).
