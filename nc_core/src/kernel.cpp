@@ -64,9 +64,6 @@ plc::AXIS_REF& Kernel::add_axis(const AxisConfig& config) {
 
 namespace {
 
-// How many axes ahead the steady loop asks for an axis's data (docs/performance.md).
-constexpr std::size_t kPrefetchAhead = 2;
-
 // A coupling command (MC_GearIn, MC_GearInDyn, MC_GearOut) waits in some axis's mailbox: its
 // phase (a) reads another axis and may change the coupling graph. Only these commands reach
 // another axis; none of them can be buffered (command_buffer.hpp).
@@ -93,18 +90,7 @@ void Kernel::cycle() noexcept {
     // No axis reads another in this cycle, and none will start to: each axis runs all its
     // phases (a) to (f) before the next one, so its data stays in the cache and the kernel
     // loops once (docs/architecture.md "One tick").
-    // The arrays in locals: the call of each axis could change the members, so they would be
-    // loaded again after each (the vectors do not change in a cycle).
-    const std::unique_ptr<detail::ServoAxis>* const axes = axes_.data();
-    AxisSnapshot* const snapshots = snapshots_.data();
-    const std::span<const AxisSnapshot> all(snapshots, n);
-    for (std::size_t i = 0; i < n; ++i) {
-      // The data of the axis after the next one is on its way while this one runs.
-      if (i + kPrefetchAhead < n) {
-        detail::prefetch_cycle_data(*axes[i + kPrefetchAhead], snapshots[i + kPrefetchAhead]);
-      }
-      axes[i]->run_cycle_alone(port, snapshots[i], all, counter);
-    }
+    detail::ServoAxis::run_cycles_alone(axes_, snapshots_, port, counter);
   } else {
     // (a) commands of every axis first: a coupling command reads other axes and changes the
     // graph, so the order and the blocks below are those after it.

@@ -23,7 +23,8 @@ namespace nc {
 using ErrorCode = plc::ErrorCode;
 
 namespace detail {
-class ProfileWriter;     // the planners' inline builder (nc_core/src/profile/profile_writer.hpp)
+class ProfileWriter;  // the planners' inline builder (nc_core/src/profile/profile_writer.hpp)
+class ProfileSample;  // at() inline for the cycle's sample (nc_core/src/profile/profile_sample.hpp)
 struct ProfileBuild {};  // tag of the Profile a ProfileWriter starts (internal)
 }  // namespace detail
 
@@ -64,10 +65,6 @@ class SegmentTable {
   SegmentTable(const SegmentTable& other) noexcept;
   SegmentTable& operator=(const SegmentTable& other) noexcept;
   ~SegmentTable() = default;
-
-  // The segment holding t (0 < t < the end, count > 0): the last one with t0 <= t (the first when
-  // none is), searched from `cursor` forwards or backwards and left there.
-  std::size_t find(double t, std::size_t& cursor) const noexcept;
 
   std::size_t count;  // first: with the Profile's header on the line of the first segment
   union {
@@ -133,6 +130,7 @@ class Profile {
 
  private:
   friend class detail::ProfileWriter;
+  friend class detail::ProfileSample;
 
   // The profile a ProfileWriter starts (ProfileWriter::begin): the header's fields and the segment
   // count are left to the writer, which sets each of them before the profile is handed out (issue

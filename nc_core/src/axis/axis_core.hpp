@@ -52,16 +52,20 @@ struct AxisCore;
 
 // What phase (f) publishes that only events change (publish.cpp): the StateDWord bits of the
 // enables and the error, the job, the homing, MC_Stop's lock and "has been stopped", the
-// coupling, the superpositions and the C7 delay (kept here), and what the constant-velocity bit
-// needs of the job; event_image() also writes the NcToPlc fields that only events change
-// (AxisState, CoupleState, the compensation's values, TargetVelo and GearRatio but a coupled
-// slave's, the channel's five). AxisCore keeps one, renewed in the publish after note_event() or
-// a change of the channel; event_image() computes it in full (the kept one and the published
-// fields must always equal it: the tests and the fuzz watch compare them every cycle,
-// KernelAxes::published_image_consistent).
+// coupling, the superpositions and the C7 delay (kept here), what the constant-velocity bit
+// needs of the job, and whether a rare state runs; event_image() also writes the NcToPlc fields
+// that only events change (AxisState, CoupleState, the compensation's values, TargetVelo and
+// GearRatio but a coupled slave's, the channel's five). AxisCore keeps one, renewed in the publish
+// after note_event() or a change of the channel; event_image() computes it in full (the kept one
+// and the published fields must always equal it: the tests and the fuzz watch compare them every
+// cycle, KernelAxes::published_image_consistent).
 struct EventImage {
   uint32_t state_bits = 0;
   JobKind job_kind = JobKind::kNone;
+  // A homing, a superposition (compensation, external generation, held offset) or the C8 filter
+  // runs: the steady cycle takes the full body of its phases (servo_axis.cpp,
+  // ServoPhases::cycle_alone).
+  bool rare = false;
   double constant_acceleration = 0.0;  // |SetAcc| up to this counts as constant velocity
   bool operator==(const EventImage&) const noexcept = default;
 };
@@ -76,8 +80,10 @@ struct AxisCore {
   AxisCore(const AxisConfig& config, double cycle_time, std::size_t index, Profile& scratch)
       : cycle_time_(cycle_time), index_(index), scratch_(scratch), config_(config) {}
 
-  // The one basic source of this cycle (set_value_source.hpp).
-  SetValueSource source() const noexcept;
+  // The one basic source of this cycle (set_value_source.hpp). `may_be_coupled` false: the caller
+  // knows the axis is no coupled slave; `quiet`: no homing and no external generation runs
+  // (ServoPhases::cycle_alone); those tests are left out.
+  SetValueSource source(bool may_be_coupled = true, bool quiet = false) const noexcept;
   // The motion a new job, a stop or the error ramp takes over (its limits, K4, K5, K8): the
   // running homing's, else the job's.
   const MasterJob& running_motion() const noexcept {
@@ -214,10 +220,12 @@ inline BasicPath AxisCore::basic_path() const noexcept {
   return path;
 }
 
-inline SetValueSource AxisCore::source() const noexcept {
-  if (slave_link_.coupled) return SetValueSource::kSlaveLink;  // a coupled slave has no job
-  if (homing_.active()) return SetValueSource::kHomingJob;
+inline SetValueSource AxisCore::source(bool may_be_coupled, bool quiet) const noexcept {
+  // A coupled slave has no job.
+  if (may_be_coupled && slave_link_.coupled) return SetValueSource::kSlaveLink;
+  if (!quiet && homing_.active()) return SetValueSource::kHomingJob;
   if (job_.active()) return SetValueSource::kPtpJob;
+  if (quiet) return SetValueSource::kHold;
   const ExternalSetpoint& external = stack_.external;
   if (external.taking() && external.type() == ExternalSetpoint::Type::kAbsolute) {
     return SetValueSource::kExternalAbsolute;

@@ -15,9 +15,15 @@ class AxisMonitoring : public AxisPart {
  public:
   using AxisPart::AxisPart;
 
+  // `kAlone`: called in ServoPhases::cycle_alone(), where nothing is coupled and phase (c) gives no
+  // drive command (servo_axis.cpp, ServoPhases).
+  template <bool kAlone>
   void check_enables() noexcept;
   // Inlined into the monitor phase (only servo_axis.cpp calls them).
+  // `kQuiet`: no homing and no external generation runs (ServoPhases).
+  template <bool kAlone, bool kQuiet>
   [[gnu::always_inline]] inline void run_monitors() noexcept;
+  template <bool kQuiet>
   [[gnu::always_inline]] inline void finish_job() noexcept;
 };
 

@@ -19,9 +19,12 @@ class AxisMotion : public AxisPart {
  public:
   using AxisPart::AxisPart;
 
-  // Phase b; `snapshots`: every axis's, a slave samples its master's.
+  // Phase b; `snapshots`: every axis's, a slave samples its master's. `kAlone` and `kQuiet` as in
+  // AxisMonitoring (servo_axis.cpp, ServoPhases).
+  template <bool kAlone, bool kQuiet>
   void generate_set_values(std::span<const AxisSnapshot> snapshots) noexcept;
   // Phase d.
+  template <bool kAlone>
   void control_and_drive() noexcept;
 };
 

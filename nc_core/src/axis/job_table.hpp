@@ -20,6 +20,7 @@
 #include <cstdint>
 
 #include "nc_core/profile.hpp"
+#include "profile/profile_sample.hpp"
 
 namespace nc::detail {
 
@@ -171,7 +172,8 @@ inline KinematicState JobTable::advance(JobKind kind, bool final, double cycle_t
     return state_;
   }
   double jerk = 0.0;
-  const KinematicState sample = profile_.at(t, jerk);  // one search for p, v, a and j
+  // One search for p, v, a and j, inline (Profile::at(t, jerk)).
+  const KinematicState sample = ProfileSample::at(profile_, t, jerk);
   jerk_ = chain_.velocity(jerk);
   state_ = chain_.state(sample);
   return state_;

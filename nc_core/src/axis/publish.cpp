@@ -53,6 +53,7 @@ EventImage event_image(const AxisCore& a, plc::NCTOPLC_AXIS_REF& out) noexcept {
     state = AxisState::kContinuousMotion;
   }
   image.job_kind = kind;
+  image.rare = a.homing_.active() || !a.stack_.empty() || a.actual_filter_.active;
   image.constant_acceleration = 1e-9 * a.job_.goal.limits().acceleration + 1e-12;
 
   out.AxisState = static_cast<uint32_t>(state);

@@ -1,8 +1,8 @@
 // The phases of the NC cycle for one axis (the kernel runs each over all axes), the NC→PLC image
 // of phase (f) (SPEC A7), and the two parts they call in every cycle, kept in this file so that
 // they inline into the phases: AxisMotion (set values, position control, drive) and
-// AxisMonitoring (enables, monitors, job completion) (SPEC A3, A4, A6). run_cycle_alone() is
-// all of one axis's cycle in one function (docs/performance.md "Fourth pass").
+// AxisMonitoring (enables, monitors, job completion) (SPEC A3, A4, A6). run_cycles_alone() is
+// all of the axes' cycle in one function (docs/performance.md "Fourth pass", "Sixth pass").
 #include "axis/servo_axis.hpp"
 
 #include <cmath>
@@ -51,20 +51,37 @@ void write_snapshot(const AxisCore& a, AxisSnapshot& snapshot) noexcept {
   snapshot.actual_acceleration = a.drive_.acceleration();
 }
 
+// The set values phase (d) controls to: phase (c)'s drive command when given this cycle, else the
+// program's. `kAlone`: in ServoAxis::run_cycles_alone() (HLI stage not engaged), where it is never
+// given.
+template <bool kAlone>
+const KinematicState& drive_command(const AxisCore& a) noexcept {
+  if constexpr (kAlone) return a.set_;
+  return a.drive_command();
+}
+
 // The phases of a servo axis (not a two-speed one): the bodies of ServoAxis's phases, which hand a
-// two-speed axis over to its TwoSpeedAxis first. run_cycle_alone() looks at the kind once and
+// two-speed axis over to its TwoSpeedAxis first. run_cycles_alone() looks at the kind once and
 // runs these (the check in each phase cost 14 instructions per axis-cycle, docs/performance.md
 // "Fifth pass").
+// `kAlone`: the bodies for cycle_alone(), which the kernel runs only while nothing is coupled,
+// no coupling command waits and the HLI stage is not engaged; there no axis is a coupled or
+// detached slave or has slaves, and phase (c) gives no drive command, so those tests are left out
+// (docs/performance.md "Sixth pass"). `kQuiet`: the bodies of phases (b) to (e) for an axis in
+// no rare state (EventImage::rare: no homing, no superposition, no C8 filter), which only phase
+// (a) could start; cycle_alone() chooses them after phase (a) when nothing has happened
+// since the last publish.
 class ServoPhases : public AxisPart {
  public:
   using AxisPart::AxisPart;
+  template <bool kAlone>
   void commands(CouplingPort& port) noexcept {
     AxisCore& a = s_;
     a.error_event_ = false;
     a.drive_command_given_ = false;
     OnlineChange(a).read_override();
     AxisCommands(a).handle_commands(port);
-    AxisMonitoring(a).check_enables();
+    AxisMonitoring(a).check_enables<kAlone>();
     // command_buffer.cpp: a waiting command takes over; a pass left alone stops. Neither without
     // a waiting command or a pass.
     if (a.buffer_.waiting || a.job_.passing()) {
@@ -75,10 +92,11 @@ class ServoPhases : public AxisPart {
       OnlineChange(a).run_online_functions();  // only a motion job has online functions
     }
   }
+  template <bool kAlone, bool kQuiet = false>
   void set_values(AxisSnapshot& snapshot, std::span<const AxisSnapshot> snapshots,
                   bool shared) noexcept {
     AxisCore& a = s_;
-    if (a.slave_link_.coupled) {
+    if (!kAlone && a.slave_link_.coupled) {
       // Seed 000 §3.2.2: slave target velocity = coupling factor × master target velocity; the
       // target position likewise (a compensation on the slave moves it on, seed 000 §3.2.4).
       const AxisSnapshot& master = snapshots[a.slave_link_.master];
@@ -91,25 +109,29 @@ class ServoPhases : public AxisPart {
                     a.slave_link_.factor * master.target_velocity};
       a.target_ = a.slave_path_.target;
     }
-    AxisMotion(a).generate_set_values(snapshots);
+    AxisMotion(a).generate_set_values<kAlone, kQuiet>(snapshots);
     // The set values and the path, read in this cycle by slaves and the HLI stage (after the
     // cycle Kernel::snapshot() fills the snapshot in).
     if (shared) write_snapshot(a, snapshot);
     // C8: the filtered actual values instead (error_propagation.cpp); without slaves and a filter
     // running it has nothing to do.
-    if (a.slave_count_ != 0 || a.actual_filter_.active) GroupErrors(a).publish_for_slaves(snapshot);
+    if ((!kAlone && a.slave_count_ != 0) || (!kQuiet && a.actual_filter_.active)) {
+      GroupErrors(a).publish_for_slaves(snapshot);
+    }
   }
+  template <bool kAlone>
   void drive() noexcept {
     AxisCore& a = s_;
-    AxisMotion(a).control_and_drive();
-    a.previous_drive_position_ = a.drive_command().p;
+    AxisMotion(a).control_and_drive<kAlone>();
+    a.previous_drive_position_ = drive_command<kAlone>(a).p;
     // The set and actual values the snapshot shows after the cycle: no axis reads them in the
     // rest of it, so Kernel::snapshot() fills them (fill_snapshot()).
   }
+  template <bool kAlone, bool kQuiet = false>
   void monitors(AxisSnapshot& snapshot, bool shared) noexcept {
     AxisCore& a = s_;
-    AxisMonitoring(a).run_monitors();
-    AxisMonitoring(a).finish_job();
+    AxisMonitoring(a).run_monitors<kAlone, kQuiet>();
+    AxisMonitoring(a).finish_job<kQuiet>();
     if (a.propagation_.pending) {
       a.note_event();  // the C7 delay runs (StateDWord bit 6) and ends here
       snapshot.group_reaction_due = GroupErrors(a).group_reaction_due();
@@ -121,11 +143,12 @@ class ServoPhases : public AxisPart {
     if (shared) write_snapshot(a, snapshot);
     // The precondition of SPEC C8 case 2 for the group of this axis alone; for the head of a larger
     // group the kernel replaces it after the group reactions (Kernel::mark_ready_groups).
-    if (!a.slave_link_.coupled && !a.slave_link_.detached) {
+    if (kAlone || (!a.slave_link_.coupled && !a.slave_link_.detached)) {
       a.group_ready_ =
           !a.channel_.has_error() && plc::test_bit(a.control_seen_, plc::kControlEnable);
     }
   }
+  template <bool kAlone>
   void publish(uint64_t cycle_counter) noexcept {
     AxisCore& a = s_;
     plc::NCTOPLC_AXIS_REF& out = a.channel_.ref().NcToPlc;
@@ -136,13 +159,13 @@ class ServoPhases : public AxisPart {
       a.channel_.published();
       a.image_ = event_image(a, out);
     }
-    if (a.slave_link_.coupled) {  // the master's target velocity and a cyclic factor: every cycle
+    if (!kAlone && a.slave_link_.coupled) {  // the master's target velocity, a cyclic factor
       out.TargetVelo = a.slave_path_.target_velocity;
       out.GearRatio = a.slave_link_.factor;
     }
     const double actual = a.drive_.measured_position();
 
-    const KinematicState& command = a.drive_command();  // d: the set values phase (d) controls to
+    const KinematicState& command = drive_command<kAlone>(a);  // d: what phase (d) controlled to
     out.SetPos = command.p;
     out.SetVelo = command.v;
     out.SetAcc = command.a;
@@ -160,8 +183,9 @@ class ServoPhases : public AxisPart {
     const JobKind kind = a.image_.job_kind;
     const bool constant_velocity =
         (kind == JobKind::kVelocity && a.job_.table.velocity_reached()) ||
-        (kind == JobKind::kPosition && !a.job_.table.generation_ended() && a.set_.v != 0.0 &&
-         std::abs(a.set_.a) <= a.image_.constant_acceleration && a.set_jerk_ == 0.0);
+        (kind == JobKind::kPosition && !a.job_.table.generation_ended() &&
+         ((a.set_.v != 0.0) & (std::abs(a.set_.a) <= a.image_.constant_acceleration) &
+          (a.set_jerk_ == 0.0)));
 
     uint32_t word = a.image_.state_bits;
     set_state_bit(word, plc::kStateNotMoving, std::abs(a.drive_.velocity()) < a.standstill_window_);
@@ -177,6 +201,32 @@ class ServoPhases : public AxisPart {
     // A check build (-DNCSDK_CHECK_EVENT_IMAGE): a missed note_event() stops the program here.
     if (!image_consistent(a)) std::abort();
 #endif
+  }
+  // Phases (a) to (f) in ServoAxis::run_cycles_alone().
+  void cycle_alone(CouplingPort& port, AxisSnapshot& snapshot,
+                   std::span<const AxisSnapshot> snapshots, uint64_t cycle_counter) noexcept {
+    AxisCore& a = s_;
+#ifdef NCSDK_CHECK_EVENT_IMAGE
+    // A check build: what the kAlone bodies take as known holds.
+    if (a.slave_link_.coupled || a.slave_link_.detached || a.slave_count_ != 0) std::abort();
+#endif
+    commands<true>(port);
+    // Nothing happened since the last publish (its image says no rare state runs) and phase (a)
+    // started nothing: the quiet bodies.
+    if (a.events_ || a.image_.rare || a.channel_.changed()) {
+      set_values<true>(snapshot, snapshots, false);
+      drive<true>();
+      monitors<true>(snapshot, false);
+    } else {
+#ifdef NCSDK_CHECK_EVENT_IMAGE
+      // A check build: what the quiet bodies take as known holds.
+      if (a.homing_.active() || !a.stack_.empty() || a.actual_filter_.active) std::abort();
+#endif
+      set_values<true, true>(snapshot, snapshots, false);
+      drive<true>();
+      monitors<true, true>(snapshot, false);
+    }
+    publish<true>(cycle_counter);
   }
 };
 
@@ -204,38 +254,55 @@ ServoAxis::ServoAxis(const AxisConfig& config, double cycle_time, std::size_t in
 
 void ServoAxis::phase_commands(CouplingPort& port) noexcept {
   if (two_speed_) return two_speed_->phase_commands();
-  ServoPhases(*this).commands(port);
+  ServoPhases(*this).commands<false>(port);
 }
+
+namespace {
+
+// How many axes ahead the steady loop asks for an axis's data (docs/performance.md).
+constexpr std::size_t kPrefetchAhead = 2;
+
+}  // namespace
 
 // Flattened: the phases and their parts in this file inline into one function, so the steady
 // path of an axis's cycle is one body (docs/performance.md "Fourth pass": 68 instructions per
-// axis-cycle fewer than five calls); the axis's kind is looked at once ("Fifth pass").
-[[gnu::flatten]] void ServoAxis::run_cycle_alone(CouplingPort& port, AxisSnapshot& snapshot,
-                                                 std::span<const AxisSnapshot> snapshots,
-                                                 uint64_t cycle_counter) noexcept {
-  if (two_speed_) {
-    phase_commands(port);
-    run_alone(snapshot, snapshots, cycle_counter);
-    return;
+// axis-cycle fewer than five calls); the axis's kind is looked at once ("Fifth pass"); and that
+// body is the loop's, so the registers are saved once per cycle, not once per axis ("Sixth pass").
+[[gnu::flatten]] void ServoAxis::run_cycles_alone(std::span<const std::unique_ptr<ServoAxis>> axes,
+                                                  std::span<AxisSnapshot> snapshots,
+                                                  CouplingPort& port,
+                                                  uint64_t cycle_counter) noexcept {
+  // The arrays in locals: the call of each axis could change the members, so they would be
+  // loaded again after each (the vectors do not change in a cycle).
+  const std::unique_ptr<ServoAxis>* const axis = axes.data();
+  AxisSnapshot* const snapshot = snapshots.data();
+  const std::size_t n = axes.size();
+  const std::span<const AxisSnapshot> all(snapshot, n);
+  for (std::size_t i = 0; i < n; ++i) {
+    // The data of the axis after the next one is on its way while this one runs.
+    if (i + kPrefetchAhead < n) {
+      prefetch_cycle_data(*axis[i + kPrefetchAhead], snapshot[i + kPrefetchAhead]);
+    }
+    ServoAxis& s = *axis[i];
+    if (s.two_speed_) {
+      s.phase_commands(port);
+      s.run_alone(snapshot[i], all, cycle_counter);
+    } else {
+      ServoPhases(s).cycle_alone(port, snapshot[i], all, cycle_counter);
+    }
   }
-  ServoPhases phases(*this);
-  phases.commands(port);
-  phases.set_values(snapshot, snapshots, false);
-  phases.drive();
-  phases.monitors(snapshot, false);
-  phases.publish(cycle_counter);
 }
 
 void ServoAxis::phase_set_values(AxisSnapshot& snapshot, std::span<const AxisSnapshot> snapshots,
                                  bool shared) noexcept {
   if (two_speed_) return two_speed_->phase_set_values(snapshot);
-  ServoPhases(*this).set_values(snapshot, snapshots, shared);
+  ServoPhases(*this).set_values<false>(snapshot, snapshots, shared);
 }
 
 // Phase (f): the NC→PLC image; what only events change comes from image_ (publish.cpp).
 void ServoAxis::phase_publish(uint64_t cycle_counter) noexcept {
   if (two_speed_) return two_speed_->phase_publish(cycle_counter, static_cast<int32_t>(index_));
-  ServoPhases(*this).publish(cycle_counter);
+  ServoPhases(*this).publish<false>(cycle_counter);
 }
 
 void ServoAxis::phase_drive_command(const KinematicState& drive, ErrorCode stop,
@@ -251,7 +318,7 @@ void ServoAxis::phase_drive_command(const KinematicState& drive, ErrorCode stop,
 
 void ServoAxis::phase_drive(AxisSnapshot& snapshot) noexcept {
   if (two_speed_) return two_speed_->phase_drive(snapshot);
-  ServoPhases(*this).drive();
+  ServoPhases(*this).drive<false>();
 }
 
 void ServoAxis::fill_snapshot(AxisSnapshot& snapshot) const noexcept {
@@ -261,11 +328,12 @@ void ServoAxis::fill_snapshot(AxisSnapshot& snapshot) const noexcept {
 
 void ServoAxis::phase_monitors(AxisSnapshot& snapshot, bool shared) noexcept {
   if (two_speed_) return two_speed_->phase_monitors(snapshot);
-  ServoPhases(*this).monitors(snapshot, shared);
+  ServoPhases(*this).monitors<false>(snapshot, shared);
 }
 
 // --- AxisMonitoring ---
 
+template <bool kAlone>
 void AxisMonitoring::check_enables() noexcept {
   AxisCore& a = s_;  // held in a register: no reload of s_ after each store
   const uint32_t control = a.channel_.ref().PlcToNc.ControlDWord;
@@ -274,7 +342,7 @@ void AxisMonitoring::check_enables() noexcept {
   const bool lost = seen && !enabled;
   if (enabled != seen) a.note_event();  // StateDWord's Operational, AxisState
   a.control_seen_ = control;
-  if (a.slave_count_ == 0) {  // no group to follow this axis: never case 2 (follows_by_hand())
+  if (kAlone || a.slave_count_ == 0) {  // no group follows this axis: never case 2
     GroupErrors(a).end_by_hand();
   } else {
     a.note_event();
@@ -292,7 +360,7 @@ void AxisMonitoring::check_enables() noexcept {
   // Feed enable removed in the direction of travel: the axis stops on its error ramp (also when
   // external setpoints move it; a coupled slave's error stops its group, see Kernel).
   if ((a.job_.is_motion() || a.homing_.active() || a.stack_.external.enabled() ||
-       a.slave_link_.coupled) &&
+       (!kAlone && a.slave_link_.coupled)) &&
       !a.channel_.has_error()) {
     if (a.set_.v > 0.0 && !a.channel_.feed_enabled(1.0)) {
       a.raise_error(ErrorCode::kFeedEnablePlusMissing);
@@ -302,17 +370,18 @@ void AxisMonitoring::check_enables() noexcept {
   }
 }
 
+template <bool kAlone, bool kQuiet>
 void AxisMonitoring::run_monitors() noexcept {
   AxisCore& a = s_;  // held in a register: no reload of s_ after each store
   const double actual = a.drive_.measured_position();
   const bool armed = a.channel_.controller_enabled() && !a.channel_.has_error();
-  if (a.monitors_.following_error(a.drive_command().p - actual, armed)) {
+  if (a.monitors_.following_error(drive_command<kAlone>(a).p - actual, armed)) {
     a.raise_error(ErrorCode::kFollowingErrorPosition);
   }
   // Software limits during motion: the set position passes an enabled limit while it moves
   // outward. Moving back in from outside (seed 000 §2.1 note 5) is not an error.
   const bool moving_on_its_own = a.job_.active() && a.job_.kind() != JobKind::kEmergencyStop;
-  if (!a.channel_.has_error() && (moving_on_its_own || a.slave_link_.coupled)) {
+  if (!a.channel_.has_error() && (moving_on_its_own || (!kAlone && a.slave_link_.coupled))) {
     if (a.set_.v > 0.0 && a.monitors_.above_max(a.set_.p)) {
       a.raise_error(ErrorCode::kSoftLimitMaxDuringMotion);
     } else if (a.set_.v < 0.0 && a.monitors_.below_min(a.set_.p)) {
@@ -322,13 +391,14 @@ void AxisMonitoring::run_monitors() noexcept {
   // The windows count only once set-value generation rests: the job has ended and the external
   // generator (seed 000 §2.6) is not feeding a motion (direction ±1), so a fed motion passing
   // through its target window is not "in target position".
-  const bool settled = a.channel_.controller_enabled() && !a.stack_.external.moving() &&
-                       !a.slave_link_.coupled && !a.homing_.active() &&
+  const bool settled = a.channel_.controller_enabled() && (kQuiet || !a.stack_.external.moving()) &&
+                       (kAlone || !a.slave_link_.coupled) && (kQuiet || !a.homing_.active()) &&
                        (!a.job_.active() ||
                         (a.job_.kind() != JobKind::kVelocity && a.job_.table.generation_ended()));
   a.monitors_.windows(actual - a.drive_offset_, a.target_, settled);  // in program coordinates
 }
 
+template <bool kQuiet>
 void AxisMonitoring::finish_job() noexcept {
   AxisCore& a = s_;  // held in a register: no reload of s_ after each store
   // A job answers Done only while it is the command the axis executes and still runs: a job
@@ -336,7 +406,9 @@ void AxisMonitoring::finish_job() noexcept {
   // must not answer CmdNo, which may be a command already answered (fuzz finding K12). Asked
   // as the cycle's monitors left the channel: before a homing's Done, else when a job ends
   // (nothing between here and there answers).
-  const bool homing_done = a.homing_.finished();
+  // (Not a constant in the quiet body, so that the lambda's captures stay the same in both.)
+  bool homing_done = false;
+  if constexpr (!kQuiet) homing_done = a.homing_.finished();
   const bool own_before_homing = homing_done && a.channel_.runs(a.job_.number());
   const auto own = [&a, homing_done, own_before_homing]() noexcept {
     return homing_done ? own_before_homing : a.channel_.runs(a.job_.number());
@@ -384,6 +456,7 @@ void AxisMonitoring::finish_job() noexcept {
 
 // --- AxisMotion ---
 
+template <bool kAlone, bool kQuiet>
 void AxisMotion::generate_set_values(std::span<const AxisSnapshot> snapshots) noexcept {
   AxisCore& a = s_;  // held in a register: no reload of s_ after each store
   a.previous_set_position_ = a.set_.p;
@@ -392,7 +465,7 @@ void AxisMotion::generate_set_values(std::span<const AxisSnapshot> snapshots) no
     a.end_external_generation();  // seed 000 §2.6: the controller enable's edge switches it off
     // A coupled slave follows again from where it stands when the enable returns; its
     // compensation ends with the enable (the offset taken anew includes what it did).
-    if (a.slave_link_.coupled) {
+    if (!kAlone && a.slave_link_.coupled) {
       a.slave_link_.retake_offset = true;
       if (a.stack_.compensation.running() || a.stack_.held() != 0.0) {
         a.fold_superpositions(CommandState::kAborted);
@@ -403,7 +476,7 @@ void AxisMotion::generate_set_values(std::span<const AxisSnapshot> snapshots) no
   bool not_finite = false;
   bool too_large = false;
   bool absolute_ended = false;
-  switch (a.source()) {
+  switch (a.source(!kAlone, kQuiet)) {
     case SetValueSource::kPtpJob:
       a.base_ = a.job_.advance(a.cycle_time_);
       a.set_jerk_ = a.job_.table.jerk();
@@ -431,17 +504,19 @@ void AxisMotion::generate_set_values(std::span<const AxisSnapshot> snapshots) no
       AxisHoming(a).run_homing();
       break;
     case SetValueSource::kHold:
-      if (a.stack_.moves_alone()) {
+      if (!kQuiet && a.stack_.moves_alone()) {
         a.base_.v = 0.0;  // the basic motion holds; a superposition may still move the axis
         a.base_.a = 0.0;
       } else {
         a.base_ = KinematicState{a.set_.p, 0.0, 0.0};  // the axis holds where it is
+        // The held offset ends here (no offset while quiet): EventImage::rare changes.
+        if (!kQuiet && a.stack_.held() != 0.0) a.note_event();
         a.stack_.drop_held();
       }
       a.set_jerk_ = 0.0;
       break;
   }
-  if (a.stack_.empty()) {
+  if (kQuiet || a.stack_.empty()) {
     // The steady case: superimpose() would add the held ±0.0 and nothing else (the addition
     // kept for the sign of a zero). Without the stack there is no absolute packet either.
     a.set_ = KinematicState{a.base_.p + a.stack_.held(), a.base_.v, a.base_.a};
@@ -468,11 +543,12 @@ void AxisMotion::generate_set_values(std::span<const AxisSnapshot> snapshots) no
   if (too_large || r.too_large) a.raise_error(ErrorCode::kSetVelocityNotAllowed);
 }
 
+template <bool kAlone>
 void AxisMotion::control_and_drive() noexcept {
   AxisCore& a = s_;  // held in a register: no reload of s_ after each store
   if (a.encoder_) {
     // Encoder / virtual axis: no controller, the actual values are the set values.
-    const KinematicState& command = a.drive_command();
+    const KinematicState& command = drive_command<kAlone>(a);
     a.drive_.follow(command.p, command.v, command.a);
     return;
   }
@@ -486,8 +562,8 @@ void AxisMotion::control_and_drive() noexcept {
     return;
   }
   const double previous =
-      a.drive_command_given_ ? a.previous_drive_position_ : a.previous_set_position_;
-  const double command = a.controller_.command(previous, a.drive_command().p,
+      !kAlone && a.drive_command_given_ ? a.previous_drive_position_ : a.previous_set_position_;
+  const double command = a.controller_.command(previous, drive_command<kAlone>(a).p,
                                                a.drive_.measured_position(), a.cycle_time_);
   a.drive_.step(command, true);
 }

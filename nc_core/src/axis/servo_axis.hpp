@@ -75,9 +75,12 @@ class ServoAxis : private AxisCore {
     phase_monitors(snapshot, false);
     phase_publish(cycle_counter);
   }
-  // Phase (a), then run_alone(): the kernel's loop while no axis reads another, in one call.
-  void run_cycle_alone(CouplingPort& port, AxisSnapshot& snapshot,
-                       std::span<const AxisSnapshot> snapshots, uint64_t cycle_counter) noexcept;
+  // The kernel's loop while no axis reads another (no coupling, no coupling command waiting, HLI
+  // stage not engaged): phase (a), then run_alone()'s phases, of each axis before the next one.
+  // `snapshots`: every axis's, by index.
+  static void run_cycles_alone(std::span<const std::unique_ptr<ServoAxis>> axes,
+                               std::span<AxisSnapshot> snapshots, CouplingPort& port,
+                               uint64_t cycle_counter) noexcept;
 };
 
 // Asks the CPU for the cache lines from `from` to `from + bytes` (a hint: no effect on a value).
