@@ -16,9 +16,7 @@ void MC_Power::operator()(plc::AXIS_REF& axis) noexcept {
   // Written as a comparison that NaN fails.
   const bool override_valid = Override >= 0.0 && Override <= 100.0;
   if (override_valid && (!override_written_ || Override != written_override_)) {
-    axis.PlcToNc.Override = static_cast<uint32_t>(std::lround(Override * 10'000.0));
-    override_written_ = true;
-    written_override_ = Override;
+    write_override(axis);
   }
 
   Status = plc::test_bit(axis.NcToPlc.StateDWord, plc::kStateOperational);
@@ -26,6 +24,13 @@ void MC_Power::operator()(plc::AXIS_REF& axis) noexcept {
   ErrorID = override_valid ? 0 : plc::to_id(plc::ErrorCode::kOverrideNotAllowed);
   Busy = Enable;
   Active = Enable && !Error;
+}
+
+// Out of line: the call of lround made every call of the block save and restore registers.
+void MC_Power::write_override(plc::AXIS_REF& axis) noexcept {
+  axis.PlcToNc.Override = static_cast<uint32_t>(std::lround(Override * 10'000.0));
+  override_written_ = true;
+  written_override_ = Override;
 }
 
 }  // namespace fb

@@ -13,12 +13,6 @@ uint16_t CommandMailbox::post(Command command) noexcept {
   return command.number;
 }
 
-CommandAnswer CommandMailbox::answer(uint16_t number) const noexcept {
-  const CommandAnswer& slot = answers_[number % kAnswerSlots];
-  if (number == 0 || slot.number != number) return CommandAnswer{number, CommandState::kFree, 0};
-  return slot;
-}
-
 bool CommandMailbox::take(Command& out) noexcept {
   if (count_ == 0) return false;
   out = queue_[head_];

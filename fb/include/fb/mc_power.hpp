@@ -39,6 +39,9 @@ class MC_Power {
   void operator()(plc::AXIS_REF& axis) noexcept;
 
  private:
+  // Writes Override to PlcToNc.Override and remembers it (a valid value that differs).
+  [[gnu::noinline]] void write_override(plc::AXIS_REF& axis) noexcept;
+
   bool override_written_ = false;  // the block has written an override
   double written_override_ = 0.0;  // %, the override it wrote last
 };

@@ -126,8 +126,12 @@ class CommandMailbox {
   // PLC side. Returns the command's number, or 0 when the queue is full (nothing posted).
   uint16_t post(Command command) noexcept;
   // PLC side. The answer for `number`; state kFree when the number is unknown or so old that its
-  // slot was reused.
-  CommandAnswer answer(uint16_t number) const noexcept;
+  // slot was reused. Inline: every busy block asks it in every PLC cycle.
+  CommandAnswer answer(uint16_t number) const noexcept {
+    const CommandAnswer& slot = answers_[number % kAnswerSlots];
+    if (number == 0 || slot.number != number) return CommandAnswer{number, CommandState::kFree, 0};
+    return slot;
+  }
 
   // NC side. Takes the oldest posted command; false when the queue is empty.
   bool take(Command& out) noexcept;
