@@ -8,7 +8,12 @@
 //   - the quartic (a rise to A-, a hold, the final ramp): where stop_point_along marks a point
 //     `quartic`, S along the push is S(0) + S' h + S'' h^2 / 2 + S''' h^3 / 6 + S'''' h^4 / 24 at
 //     every h where stop_has_hold_shape holds, to 1e-10 of the terms it is made of; at points where
-//     the stop has left that shape, stop_has_hold_shape says so.
+//     the stop has left that shape, stop_has_hold_shape says so;
+//   - switch_on_rise (the switch search's first point): on a hold or a rise at +J from the draw
+//   over
+//     a random time, with the stop a rise and the final ramp going forwards at a random point and
+//     at the end, it finds that point from the stop point's excess at the end, to 1e-9 of the time
+//     (or, where S barely moves over the piece, to 1e-13 of S).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -133,5 +138,49 @@ TEST_CASE("stop_point_along: on the rise-hold-ramp stop S is the quartic of its 
   CHECK(compared > 20'000);
   CHECK(wrong == 0);
   CHECK(left_shape == 0);
+  CHECK(off == 0);
+}
+
+TEST_CASE("switch_on_rise: the switch on a hold or a rise where the stop is a rise and the ramp",
+          "[profile][stop_point]") {
+  long found = 0, missed = 0, off = 0;
+  for_each_draw(
+      0x5EED5Eull, [&](const Draw& d, const nc::detail::StopBounds& b, profile_problems::Rng& rng) {
+        const double g = d.g == 0.0 ? 0.0 : d.limits.jerk;
+        if (g == 0.0 && !(d.a > 0.0)) return;
+        const double span =
+            std::max(d.limits.deceleration / d.limits.jerk, std::abs(d.v) / d.limits.deceleration);
+        const double t_piece = span * rng.log_uniform(1e-6, 1.0);
+        const double tau = t_piece * rng.uniform(0.0, 1.0);
+        // S (relative to the piece's start) where the stop is a rise and the ramp, going forwards.
+        auto stop_point = [&](double t, double& out) {
+          const double a_t = d.a + g * t;
+          const double v_t = d.v + t * (d.a + 0.5 * g * t);
+          nc::detail::StopAlong along{0.0, 0.0, 0.0};
+          if (!(nc::detail::natural_velocity(v_t, a_t, d.limits.jerk) > 0.0) ||
+              !nc::detail::stop_point_rise(v_t, a_t, g, b, along)) {
+            return false;
+          }
+          out = t * (d.v + t * (0.5 * d.a + t * g / 6.0)) + along.distance;
+          return true;
+        };
+        double s_root = 0.0, s_end = 0.0;
+        if (!stop_point(tau, s_root) || !stop_point(t_piece, s_end) || !(s_end >= s_root)) return;
+        const double x = nc::detail::switch_on_rise({0.0, d.v, d.a}, t_piece, g, s_end - s_root, b);
+        if (!(x > 0.0 && x < t_piece)) {
+          ++missed;
+          return;
+        }
+        ++found;
+        // Where S barely moves over the piece (a piece of a few ns) the time is only known to
+        // S's rounding: there S at the point must be the root's to that rounding.
+        double s_x = 0.0;
+        if (!(std::abs(x - tau) <= 1e-9 * t_piece) &&
+            !(stop_point(x, s_x) && std::abs(s_x - s_root) <= 1e-13 * std::abs(s_end))) {
+          ++off;
+        }
+      });
+  CHECK(found > 20'000);
+  CHECK(missed < found / 100);
   CHECK(off == 0);
 }

@@ -10,7 +10,10 @@
 // values, for the switch search and the push scan (issue 17).
 #pragma once
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 #include "profile/kinematics.hpp"
 #include "profile/velocity_change.hpp"
@@ -285,6 +288,90 @@ inline double stop_distance_closed(double v0, double a0, const StopBounds& b) no
     }
   }
   return stop_distance_of(v0, a0, b);
+}
+
+// An upper bound of cbrt(x) for x > 0, about 0.1 % above it: fdlibm's first guess (the high
+// word's exponent divided by three, 5 bits) and one Newton step, which lands at or above the root
+// of the convex y^3 - x from either side (the mean of y, y and x / y^2 is at least their geometric
+// mean). For switch_on_rise's start: libm's cbrt takes about 58 instructions.
+inline double cbrt_above(double x) noexcept {
+  const auto hi = static_cast<std::uint32_t>(std::bit_cast<std::uint64_t>(x) >> 32U);
+  const double y = std::bit_cast<double>(static_cast<std::uint64_t>(hi / 3U + 715094163U) << 32U);
+  return (2.0 * y + x / (y * y)) * (1.0 / 3.0);
+}
+
+// The switch on a push piece in closed form where the stop from the piece's end is a rise to
+// a_meet = m and the final ramp with the motion going on forwards (frame s = -1, the shape of
+// stop_point_rise), for plan_position's switch search to start from (issue 17: the power law put
+// its first point 5-50 % off on jerk pieces, and every further evaluation of the stop point is a
+// chain of two square roots and two divisions on the plan's critical path). Along such a piece S =
+// p + D has a closed form in one variable (from S' = lag D_a, stop_point_along):
+//  - a hold at a = A > 0: m^2 = (A^2 + 2 J v) / 2 grows linearly with time and
+//    S = K + (m (m + A))^2 / (2 J^2 A). At the root m (m + A) = sqrt(u^2 - 2 J^2 A over) with
+//    u = m (m + A) at the end: a quadratic in m, then v and the time.
+//  - a rise at +J: c = J v - a^2 / 2 stays constant, m = sqrt(a^2 + c), and with
+//    E = (a + m) / sqrt|c| (a = sqrt|c| sinh w for c > 0, cosh w for c < 0; E = e^w),
+//    S = K + |c|^(3/2) / (4 J^2) (E^3 +- 4 E - 1 / E). The root's E solves
+//    E^4 +- 4 E^2 - r E - 1 = 0: Halley steps from an upper bound near the root (below).
+// K is set by the stop point at the end, `over` = S(end) - goal >= 0. Returns the time from the
+// piece's start `s` (length t_piece, jerk g), or NaN where the end has another shape or frame. Only
+// a starting point: the search evaluates S there as from any other; where the shape changes between
+// the root and the end the point is merely off.
+inline double switch_on_rise(const KinematicState& s, double t_piece, double g, double over,
+                             const StopBounds& b) noexcept {
+  const double jerk = b.jerk;
+  const double a_e = s.a + g * t_piece;
+  const double v_e = s.v + t_piece * (s.a + (0.5 * g) * t_piece);
+  if (!(natural_velocity(v_e, a_e, jerk) > 0.0)) return NAN;
+  if (g == jerk) {
+    const double c = jerk * v_e - 0.5 * a_e * a_e;
+    const double m = std::sqrt(a_e * a_e + c);
+    if (!(m <= b.am && a_e + m > 0.0)) return NAN;
+    const double pm4 = c > 0.0 ? 4.0 : -4.0;
+    const double sc = std::sqrt(std::abs(c));
+    const double scale = std::abs(c) * sc * (0.25 * b.inv_jerk * b.inv_jerk);
+    const double e_end = (a_e + m) / sc;
+    const double r = e_end * (e_end * e_end + pm4) - 1.0 / e_end - over / scale;
+    // Start at an upper bound near the root, not at the end's E, which can be hundreds of times
+    // the root's (from there 86 of the benchmark set's 723 starts took 10 steps or more, 47 of them
+    // stopped at the cap short of the root; from the bound 3.2 steps on average, at most 6). For c
+    // > 0 the root lies below the root of 4E^2 - rE - 1 (h is that plus E^4) and below cbrt(r)
+    // where that is at least 1/2 (there E (E^3 - r) + 4E^2 - 1 >= 0). For c < 0 (E >= 1, where S
+    // grows with E) S at E = sqrt(4 + (r + 1) / 2) >= 2 is at least the root's, and as E^3 = r + 4E
+    // + 1/E with the right side growing in E, cbrt(r + 4u + 1/u) bounds the root again from that
+    // bound u. h is convex above the root (everywhere for c > 0, for E >= sqrt(2/3) for c < 0), so
+    // the steps fall monotonically onto it.
+    double e = 0.0;
+    if (c > 0.0) {
+      e = std::min(e_end, 0.125 * (r + std::sqrt(r * r + 16.0)));
+      if (r >= 0.125) e = std::min(e, cbrt_above(r));
+    } else {
+      const double u = std::min(e_end, std::sqrt(4.0 + 0.5 * std::max(r + 1.0, 0.0)));
+      const double u3 = r + 4.0 * u + 1.0 / u;
+      e = u3 > 0.0 ? std::min(u, cbrt_above(u3)) : u;
+    }
+    for (int k = 0; k < 12; ++k) {
+      const double e2 = e * e;
+      const double h = e * (e * (e2 + pm4) - r) - 1.0;
+      const double dh = e * (4.0 * e2 + 2.0 * pm4) - r;
+      const double ddh = 12.0 * e2 + 2.0 * pm4;
+      const double step = h * dh / (dh * dh - 0.5 * h * ddh);
+      e -= step;
+      if (!(std::abs(step) > 1e-15 * e)) break;
+    }
+    const double a_root = 0.5 * sc * (c > 0.0 ? e - 1.0 / e : e + 1.0 / e);
+    return (a_root - s.a) / jerk;
+  }
+  if (g == 0.0 && s.a > 0.0) {
+    const double aa = s.a;
+    const double m = std::sqrt(0.5 * (aa * aa + 2.0 * jerk * v_e));
+    if (!(m <= b.am)) return NAN;
+    const double u = m * (m + aa);
+    const double q = std::sqrt(u * u - 2.0 * (jerk * jerk) * aa * over);
+    const double m_root = 2.0 * q / (aa + std::sqrt(aa * aa + 4.0 * q));
+    return ((2.0 * m_root * m_root - aa * aa) / (2.0 * jerk) - s.v) / aa;
+  }
+  return NAN;
 }
 
 // Whether the shortest stop from (v0, a0) has the shape on which stop_point_along marks S as
