@@ -22,6 +22,7 @@
 #include "axis/error_propagation.hpp"
 #include "axis/external_setpoint.hpp"
 #include "axis/master_job.hpp"
+#include "axis/modulo_period.hpp"
 #include "axis/monitors.hpp"
 #include "axis/position_controller.hpp"
 #include "axis/set_value_source.hpp"
@@ -129,6 +130,9 @@ struct AxisCore {
   // encoder_ below, with the other flags.
   double modulo_factor_ = 360.0;
   double standstill_window_ = 0.0;
+  // The periods of the published ModuloActPos and ModuloSetPos (phase (f)).
+  ModuloPeriod modulo_act_{};
+  ModuloPeriod modulo_set_{};
   PositionController controller_{};
   Drive drive_{};
   Monitors monitors_{};
