@@ -22,6 +22,7 @@
 #include "axis/error_propagation.hpp"
 #include "axis/external_setpoint.hpp"
 #include "axis/master_job.hpp"
+#include "axis/modulo_period.hpp"
 #include "axis/monitors.hpp"
 #include "axis/position_controller.hpp"
 #include "axis/set_value_source.hpp"
@@ -124,11 +125,13 @@ struct AxisCore {
   // Kind kTwoSpeed: the phases run this instead of the servo path (AxisKind dispatch).
   std::unique_ptr<TwoSpeedAxis> two_speed_;
   double cycle_time_;
-  std::size_t index_;
   // The configuration values a steady cycle reads, copied here (config_ below stays cold); and
   // encoder_ below, with the other flags.
   double modulo_factor_ = 360.0;
   double standstill_window_ = 0.0;
+  // The periods of the published ModuloActPos and ModuloSetPos (phase (f)).
+  ModuloPeriod modulo_act_{};
+  ModuloPeriod modulo_set_{};
   PositionController controller_{};
   Drive drive_{};
   Monitors monitors_{};
@@ -143,29 +146,32 @@ struct AxisCore {
   double previous_set_position_ = 0.0;
   EventImage image_{};   // kept: see EventImage
   double target_ = 0.0;  // end position of the last positioning / stop; window monitors use it
-  double hand_velocity_ = 0.0;  // push_by_hand(), mm/s
-  uint32_t slave_count_ = 0;    // axes coupled to this one as their master
+  double hand_velocity_ = 0.0;        // push_by_hand(), mm/s
+  uint32_t control_seen_ = 0;         // PlcToNc.ControlDWord as the last check_enables() read it
+  bool encoder_ = false;              // config_.kind == AxisKind::kEncoder
+  bool drive_command_given_ = false;  // phase (c) gave drive_command_ in this cycle
+  bool error_event_ = false;          // an error was raised in this cycle
+  bool group_ready_ = false;          // see set_group_ready()
+  bool by_hand_ = false;              // case 2 in force (follows_by_hand() latched)
+  bool events_ = true;                // an event since image_ was computed (note_event())
+  // C7 / C8 (error_propagation.cpp), the coupling link and the homing: a steady cycle reads only
+  // the flag each keeps first, so they follow the members above in the order of their size.
+  PropagationDelay propagation_{};
+  // Read on events only (a command, an error, a coupling, the image's recomputation), so after
+  // the C7 delay's flag: the hot members above stay within seven cache lines.
+  std::size_t index_;
+  uint32_t slave_count_ = 0;  // axes coupled to this one as their master
   // The axis errors raised, counted wrapping (the HLI phase: an error raised and reset between two
   // phases (c) still shows as a change).
   uint32_t errors_raised_ = 0;
-  uint32_t control_seen_ = 0;  // PlcToNc.ControlDWord as the last check_enables() read it
   plc::CoupleState hli_role_ = plc::CoupleState::kSingle;  // from phase (c), see there
-  bool encoder_ = false;                                   // config_.kind == AxisKind::kEncoder
-  bool drive_command_given_ = false;  // phase (c) gave drive_command_ in this cycle
   // Referenced (StateDWord bit 1): the software limits are monitored only then.
   bool homed_ = true;
   bool locked_ = false;  // MC_Stop: motion commands refused until kStopRelease
   bool has_been_stopped_ = false;
-  bool error_event_ = false;  // an error was raised in this cycle
-  bool group_ready_ = false;  // see set_group_ready()
-  bool by_hand_ = false;      // case 2 in force (follows_by_hand() latched)
-  bool events_ = true;        // an event since image_ was computed (note_event())
-  // C7 / C8 (error_propagation.cpp), the coupling link and the homing: a steady cycle reads only
-  // the flag each keeps first, so they follow the members above in the order of their size.
-  PropagationDelay propagation_{};
   ActualValueFilter actual_filter_{};
   SlaveLink slave_link_{};
-  HomingJob homing_{};  // its phase first: a steady cycle reads only that
+  HomingJob homing_{};  // its phase first: a steady cycle that is not quiet reads only that
   // Phase (c): what phase (d) controls to when given this cycle (else set_).
   KinematicState drive_command_{};
   BasicPath slave_path_{};  // while coupled: the master's path of this cycle, transformed

@@ -1,22 +1,13 @@
-// The NC→PLC image's helpers (phase (f), servo_axis.cpp; the kept image, publish.cpp): the
-// modulo positions, a StateDWord bit or-ed in, and which bits EventImage keeps.
+// The NC→PLC image's helpers (phase (f), servo_axis.cpp; the kept image, publish.cpp): a
+// StateDWord bit or-ed in, and which bits EventImage keeps (the modulo positions:
+// modulo_period.hpp).
 #pragma once
 
 #include <cstdint>
 
-#include "axis/rounding.hpp"
 #include "plc_interface/axis_ref.hpp"
 
 namespace nc::detail {
-
-inline double modulo_position(double p, double factor) noexcept {
-  // Within the first period the formula gives p itself (floor 0; p + 0.0 as it turns -0.0 into
-  // +0.0): no division. `factor` is finite and > 0 (AxisConfig validation).
-  if (p >= 0.0 && p < factor) return p + 0.0;
-  double m = p - factor * floor_exact(p / factor);
-  if (m >= factor || m < 0.0) m = 0.0;  // rounding at the period edge
-  return m;
-}
 
 // Bits or-ed in without branches (every bit starts at 0).
 constexpr void set_state_bit(uint32_t& word, plc::StateBit bit, bool value) noexcept {

@@ -174,8 +174,8 @@ class ServoPhases : public AxisPart {
     out.ActVelo = a.drive_.velocity();
     out.ActAcc = a.drive_.acceleration();
     out.PosDiff = command.p - actual;
-    out.ModuloActPos = modulo_position(actual, a.modulo_factor_);
-    out.ModuloSetPos = modulo_position(command.p, a.modulo_factor_);
+    out.ModuloActPos = a.modulo_act_.position(actual, a.modulo_factor_);
+    out.ModuloSetPos = a.modulo_set_.position(command.p, a.modulo_factor_);
     out.TargetPos = a.target_;
     out.CycleCounter = static_cast<uint32_t>(cycle_counter);
 

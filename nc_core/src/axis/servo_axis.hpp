@@ -92,18 +92,22 @@ class ServoAxis : private AxisCore {
     __builtin_prefetch(p + k);
 }
 
-// Asks for the lines a steady cycle of `axis` reads (axis_core.hpp: the hot members up to the
-// homing's phase, the stack's and the channel's first lines, the job with its profile's header,
-// the buffer's flag) and its snapshot's group reaction, so that the kernel fetches the next axes'
-// data while it runs this one.
+// Asks for the lines a steady cycle of `axis` reads (axis_core.hpp) and its snapshot's group
+// reaction, so that the kernel fetches the next axes' data while it runs this one: the hot
+// members up to the C7 delay's flag, the stack's first line, the channel's first four, the job's
+// kind, and its override with the table and the profile's header and first segments, and the
+// buffer's flag (what a quiet cycle reads, docs/performance.md "Seventh pass"; not the homing,
+// the C8 filter or the slave link, which only a cycle in a rare state reads).
 [[gnu::always_inline]] inline void prefetch_cycle_data(const ServoAxis& axis,
                                                        const AxisSnapshot& snapshot) noexcept {
   const AxisCore& a = axis.core();
-  prefetch_lines(&a, 512);  // the hot members: about 500 bytes
-  prefetch_lines(&a.homing_, 1);
-  prefetch_lines(&a.stack_, 128);
+  const auto hot = static_cast<std::size_t>(reinterpret_cast<const char*>(&a.propagation_) -
+                                            reinterpret_cast<const char*>(&a));
+  prefetch_lines(&a, hot + 1);
+  prefetch_lines(&a.stack_, 1);
   prefetch_lines(&a.channel_, 256);
-  prefetch_lines(&a.job_, 256);
+  prefetch_lines(&a.job_, 1);
+  prefetch_lines(&a.job_.online, 256);
   prefetch_lines(&a.buffer_.waiting, 1);
   prefetch_lines(&snapshot.group_reaction_due, 1);  // the steady cycle writes only this
 }
