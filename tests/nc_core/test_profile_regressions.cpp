@@ -341,6 +341,42 @@ TEST_CASE("a plan to rest whose switch search starts far out on a hold at a tiny
   }
 }
 
+// Fuzz finding P28 (the rehearsal of CI's run on the planner's eighth pass, before it landed): a
+// plan to rest from v = 7.2e-9 mm/s, a = -7.0e-9 to a target 6.1e-9 mm ahead, with A+ = 2.06e-6,
+// A- = 1.57e11, J = 2.39e6 and V = 1.65e11: the push holds A+ for 8e16 s (up to V), and the switch
+// lies 0.074 s into that hold. The closed-form start of the switch search (switch_on_rise) solved
+// the root from the hold's end, where m (m + A) is 3.9e17: the difference of two squares near
+// 1.5e35 that should have been 3e-4 put the start at 1.5e9 s, and the search from there ended at
+// 0.237 s — the profile broke by 5.3e-8 mm at the switch. A closed-form start that cannot be
+// known to 1e-8 of itself is now no start (the power law's point is taken, as before the pass).
+TEST_CASE("a plan to rest whose switch lies near the start of a very long hold finds it",
+          "[profile][regression]") {
+  const KinematicState start{6.5714319085850565e-110, 7.1604517895519803e-09,
+                             -7.041529123769967e-09};
+  const double target = 6.1102063789597349e-09;
+  const Limits l{164761066496.47064, 2.0574137664859053e-06, 156842097789.33795,
+                 2393220.5176469088};
+  for (const bool passing : {false, true}) {
+    INFO((passing ? "with v_end = 0" : "to rest"));
+    const Profile prof =
+        passing ? nc::plan_position(start, target, 0.0, l) : nc::plan_position(start, target, l);
+    REQUIRE(prof.ok());
+    const profile_checks::Finding f =
+        profile_checks::check_position_profile(prof, start, target, l);
+    INFO(profile_checks::to_string(f));
+    CHECK(f.ok());
+    // The ramp back to A+ (0.86 ps), the hold at A+ up to the switch, the stop's two ramps.
+    REQUIRE(prof.segment_count() == 4);
+    const nc::Segment& hold = prof.segment(1);
+    CHECK(hold.a == l.acceleration);
+    CHECK(hold.j == 0.0);
+    CHECK(hold.duration == Approx(0.073667392663145398).epsilon(1e-9));
+    const KinematicState end = profile_checks::advance(hold, hold.duration);
+    CHECK(std::fabs(end.p - prof.segment(2).p) <= 1e-12 * target);
+    CHECK(prof.duration() == Approx(0.073667907728606374).epsilon(1e-9));
+  }
+}
+
 // Fuzz finding P26 (found by the rehearsal of CI's run after P25's fix; the same on cbe443a): a
 // target 2 mm ahead, passed at v_end, from v0 = 1.57e11 mm/s with a = 0, where V lies 0.063 mm/s
 // above v0 and v_end 0.025 mm/s below it, J = 7.2e-9. The walk takes v0 as at V and as at v_end

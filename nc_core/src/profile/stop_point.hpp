@@ -359,6 +359,11 @@ inline double switch_on_rise(const KinematicState& s, double t_piece, double g, 
       e -= step;
       if (!(std::abs(step) > 1e-15 * e)) break;
     }
+    // r keeps about 1e-16 of the terms at the end; that moves the root by its share of
+    // h'(E) / E = 3E^3 +- 4E + 1/E (at the root). Where the root's E could be off by more than
+    // 1e-8 of itself (a root far below the end of a long piece), the point is no start.
+    const double terms_end = e_end * (e_end * e_end + 4.0) + 1.0 / e_end + over / scale;
+    if (!(e * (3.0 * e * e + pm4) + 1.0 / e >= 1e-8 * terms_end)) return NAN;
     const double a_root = 0.5 * sc * (c > 0.0 ? e - 1.0 / e : e + 1.0 / e);
     return (a_root - s.a) / jerk;
   }
@@ -367,7 +372,13 @@ inline double switch_on_rise(const KinematicState& s, double t_piece, double g, 
     const double m = std::sqrt(0.5 * (aa * aa + 2.0 * jerk * v_e));
     if (!(m <= b.am)) return NAN;
     const double u = m * (m + aa);
-    const double q = std::sqrt(u * u - 2.0 * (jerk * jerk) * aa * over);
+    const double q2 = u * u - 2.0 * (jerk * jerk) * aa * over;
+    // The difference keeps about 1e-16 of u^2: where the root's q^2 is below 1e-8 of it (a root
+    // far below the end of a long hold), the point is no start (fuzz: on a hold of 8e16 s the
+    // difference of two values near 1.5e35 put the start 2e10 times beyond a switch at 0.074 s,
+    // and the search from there ended 3 times too late).
+    if (!(q2 >= 1e-8 * (u * u))) return NAN;
+    const double q = std::sqrt(q2);
     const double m_root = 2.0 * q / (aa + std::sqrt(aa * aa + 4.0 * q));
     return ((2.0 * m_root * m_root - aa * aa) / (2.0 * jerk) - s.v) / aa;
   }
