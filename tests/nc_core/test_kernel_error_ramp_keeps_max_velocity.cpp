@@ -30,3 +30,33 @@ TEST_CASE("the error ramp from a hard acceleration keeps Vmax", "[kernel][errors
   CHECK(peak == Approx(v0 + 200.0).margin(25.0));  // a ramped out at J 1e6 (one cycle's a more)
   CHECK(h.x->NcToPlc.SetVelo == 0.0);
 }
+
+TEST_CASE("a halt after a reset during the error ramp brakes with the ramp's jerk and keeps Vmax",
+          "[kernel][errors]") {
+  // Fuzz finding K24: the error ramp of the case above (at J 1e6, K5) is still running when a
+  // reset clears the error (it finishes first), and an MC_Halt with D = 0 and J = 0 then takes
+  // the running motion's D and J. The ramp is that running motion; before the fix the halt took
+  // the axis's defaults (J 50000) instead: 20000² / (2·50000) = 4000 mm/s more.
+  kt::Harness h;
+  h.post(kt::move_absolute(100000.0, 2200.0, 20000.0, 20000.0, 1e6));
+  REQUIRE(h.cycles_until([&] { return h.x->NcToPlc.SetVelo >= 1700.0; }, 1000) > 0);
+  const double v0 = h.x->NcToPlc.SetVelo;
+  kt::set_enables(*h.x, true, false, true);
+  h.cycles(2);
+  REQUIRE(h.x->NcToPlc.ErrorCode == 0x4358U);
+  REQUIRE(std::abs(h.x->NcToPlc.SetAcc) > 15000.0);  // the ramp has only begun
+  kt::set_enables(*h.x, true, true, true);
+  h.post(kt::simple(plc::CommandType::kReset));
+  h.cycles(1);
+  REQUIRE(h.x->NcToPlc.ErrorCode == 0U);
+  const uint16_t halt = h.post(kt::simple(plc::CommandType::kHalt));
+  double peak = 0.0;
+  for (int i = 0; i < 5000; ++i) {
+    h.cycles(1);
+    peak = std::max(peak, std::abs(h.x->NcToPlc.SetVelo));
+  }
+  CHECK(h.state_of(halt) == plc::CommandState::kDone);
+  CHECK(peak <= 2200.0);
+  CHECK(peak == Approx(v0 + 200.0).margin(25.0));  // a ramped out at J 1e6, as the ramp would
+  CHECK(h.x->NcToPlc.SetVelo == 0.0);
+}

@@ -254,11 +254,12 @@ ErrorCode AxisCommands::start_halt_or_stop(const plc::Command& command) noexcept
   const bool stop = command.type == CommandType::kStop;
   if (const ErrorCode code = check_halt_or_stop(command); code != ErrorCode::kNone) return code;
 
-  // 0 = the running motion's deceleration and jerk (a homing's too, K8), or the axis default
-  // when nothing runs.
+  // 0 = the running motion's deceleration and jerk (a homing's too, K8; the error ramp's, which
+  // a reset lets finish, K24: at the axis's defaults a hard acceleration would be brought back
+  // too slowly and pass the max velocity), or the axis default when nothing runs.
   const MasterJob& running = s_.running_motion();
-  const bool motion =
-      running.is_motion() || running.kind() == JobKind::kHalt || running.kind() == JobKind::kStop;
+  const bool motion = running.is_motion() || running.kind() == JobKind::kHalt ||
+                      running.kind() == JobKind::kStop || running.kind() == JobKind::kEmergencyStop;
   Limits limits{motion ? running.goal.limits().velocity : s_.config_.max_velocity,
                 motion ? running.goal.limits().acceleration : s_.config_.acceleration,
                 motion ? running.goal.limits().deceleration : s_.config_.deceleration,
