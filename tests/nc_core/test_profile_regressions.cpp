@@ -304,6 +304,44 @@ TEST_CASE("a stop from just above A- holds the start's acceleration only up to i
   }
 }
 
+namespace {
+
+// A plan to rest, and to the target at v_end = 0, whose push holds A+ up to the switch to its stop
+// (P25, P28): the profile keeps its contract, has `segments` segments with the hold second, the
+// hold ends where the stop starts (to `join`), and the hold and the whole take their times (to
+// `epsilon`).
+struct HoldThenStop {
+  std::size_t segments;
+  double hold_time;
+  double total_time;
+  double epsilon;
+  double join;
+};
+
+void check_hold_then_stop(const KinematicState& start, double target, const Limits& l,
+                          const HoldThenStop& expected) {
+  for (const bool passing : {false, true}) {
+    INFO((passing ? "with v_end = 0" : "to rest"));
+    const Profile prof =
+        passing ? nc::plan_position(start, target, 0.0, l) : nc::plan_position(start, target, l);
+    REQUIRE(prof.ok());
+    const profile_checks::Finding f =
+        profile_checks::check_position_profile(prof, start, target, l);
+    INFO(profile_checks::to_string(f));
+    CHECK(f.ok());
+    REQUIRE(prof.segment_count() == expected.segments);
+    const nc::Segment& hold = prof.segment(1);
+    CHECK(hold.a == l.acceleration);
+    CHECK(hold.j == 0.0);
+    CHECK(hold.duration == Approx(expected.hold_time).epsilon(expected.epsilon));
+    const KinematicState end = profile_checks::advance(hold, hold.duration);
+    CHECK(std::fabs(end.p - prof.segment(2).p) <= expected.join);
+    CHECK(prof.duration() == Approx(expected.total_time).epsilon(expected.epsilon));
+  }
+}
+
+}  // namespace
+
 // Fuzz finding P25 (main at cbe443a, CI's seed 1): a plan to rest (plan_position with v_end = 0)
 // from v = 1.57e11 mm/s to a target 2.26e11 mm ahead, A+ = 3.2e-5 against A- = J = 1.57e11. The
 // push holds A+ for 1.8e15 s before it would reach V, so the switch search began 2.6e7 s into
@@ -318,27 +356,12 @@ TEST_CASE("a plan to rest whose switch search starts far out on a hold at a tiny
   const KinematicState start{6.0738544773477918e-110, 156842099844.51761, 4.8122032964393445e-81};
   const double target = 225561576580.51764;
   const Limits l{214757049476.51764, 3.2499430545061044e-05, 156841959044.51764, 156842097020.0};
-  for (const bool passing : {false, true}) {
-    INFO((passing ? "with v_end = 0" : "to rest"));
-    const Profile prof =
-        passing ? nc::plan_position(start, target, 0.0, l) : nc::plan_position(start, target, l);
-    REQUIRE(prof.ok());
-    const profile_checks::Finding f =
-        profile_checks::check_position_profile(prof, start, target, l);
-    INFO(profile_checks::to_string(f));
-    CHECK(f.ok());
-    // The ramp to A+, the hold at A+ up to the switch, the stop's ramp to -A-, hold and ramp.
-    REQUIRE(prof.segment_count() == 5);
-    const nc::Segment& hold = prof.segment(1);
-    CHECK(hold.a == l.acceleration);
-    CHECK(hold.j == 0.0);
-    // The switch where the hold's end p + v t + A+ t² / 2 meets the stop's start (the old one
-    // 0.43814432248473167 s).
-    CHECK(hold.duration == Approx(0.43814432089217714).epsilon(1e-12));
-    const KinematicState end = profile_checks::advance(hold, hold.duration);
-    CHECK(std::fabs(end.p - prof.segment(2).p) <= 1e-13 * (2.0 * target));
-    CHECK(prof.duration() == Approx(2.4381443389016373).epsilon(1e-12));
-  }
+  // The ramp to A+, the hold at A+ up to the switch, the stop's ramp to -A-, hold and ramp; the
+  // switch where the hold's end p + v t + A+ t² / 2 meets the stop's start (the old one
+  // 0.43814432248473167 s).
+  check_hold_then_stop(
+      start, target, l,
+      HoldThenStop{5, 0.43814432089217714, 2.4381443389016373, 1e-12, 1e-13 * (2.0 * target)});
 }
 
 // Fuzz finding P28 (the rehearsal of CI's run on the planner's eighth pass, before it landed): a
@@ -356,25 +379,10 @@ TEST_CASE("a plan to rest whose switch lies near the start of a very long hold f
   const double target = 6.1102063789597349e-09;
   const Limits l{164761066496.47064, 2.0574137664859053e-06, 156842097789.33795,
                  2393220.5176469088};
-  for (const bool passing : {false, true}) {
-    INFO((passing ? "with v_end = 0" : "to rest"));
-    const Profile prof =
-        passing ? nc::plan_position(start, target, 0.0, l) : nc::plan_position(start, target, l);
-    REQUIRE(prof.ok());
-    const profile_checks::Finding f =
-        profile_checks::check_position_profile(prof, start, target, l);
-    INFO(profile_checks::to_string(f));
-    CHECK(f.ok());
-    // The ramp back to A+ (0.86 ps), the hold at A+ up to the switch, the stop's two ramps.
-    REQUIRE(prof.segment_count() == 4);
-    const nc::Segment& hold = prof.segment(1);
-    CHECK(hold.a == l.acceleration);
-    CHECK(hold.j == 0.0);
-    CHECK(hold.duration == Approx(0.073667392663145398).epsilon(1e-9));
-    const KinematicState end = profile_checks::advance(hold, hold.duration);
-    CHECK(std::fabs(end.p - prof.segment(2).p) <= 1e-12 * target);
-    CHECK(prof.duration() == Approx(0.073667907728606374).epsilon(1e-9));
-  }
+  // The ramp back to A+ (0.86 ps), the hold at A+ up to the switch, the stop's two ramps.
+  check_hold_then_stop(
+      start, target, l,
+      HoldThenStop{4, 0.073667392663145398, 0.073667907728606374, 1e-9, 1e-12 * target});
 }
 
 // Fuzz finding P26 (found by the rehearsal of CI's run after P25's fix; the same on cbe443a): a
