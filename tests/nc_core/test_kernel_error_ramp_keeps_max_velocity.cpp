@@ -31,13 +31,12 @@ TEST_CASE("the error ramp from a hard acceleration keeps Vmax", "[kernel][errors
   CHECK(h.x->NcToPlc.SetVelo == 0.0);
 }
 
-TEST_CASE("a halt after a reset during the error ramp brakes with the ramp's jerk and keeps Vmax",
-          "[kernel][errors]") {
-  // Fuzz finding K24: the error ramp of the case above (at J 1e6, K5) is still running when a
-  // reset clears the error (it finishes first), and an MC_Halt with D = 0 and J = 0 then takes
-  // the running motion's D and J. The ramp is that running motion; before the fix the halt took
-  // the axis's defaults (J 50000) instead: 20000² / (2·50000) = 4000 mm/s more.
-  kt::Harness h;
+namespace {
+
+// The motion of the first case, its plus feed enable removed (the error ramp starts at J 1e6),
+// given back two cycles later and the axis reset: the ramp, which a reset lets finish, still
+// brings a > 15000 mm/s² back. Returns the set velocity before the error.
+double reset_during_error_ramp(kt::Harness& h) {
   h.post(kt::move_absolute(100000.0, 2200.0, 20000.0, 20000.0, 1e6));
   REQUIRE(h.cycles_until([&] { return h.x->NcToPlc.SetVelo >= 1700.0; }, 1000) > 0);
   const double v0 = h.x->NcToPlc.SetVelo;
@@ -49,14 +48,46 @@ TEST_CASE("a halt after a reset during the error ramp brakes with the ramp's jer
   h.post(kt::simple(plc::CommandType::kReset));
   h.cycles(1);
   REQUIRE(h.x->NcToPlc.ErrorCode == 0U);
-  const uint16_t halt = h.post(kt::simple(plc::CommandType::kHalt));
+  return v0;
+}
+
+// The largest |SetVelo| over the next `cycles` cycles.
+double peak_set_speed(kt::Harness& h, int cycles) {
   double peak = 0.0;
-  for (int i = 0; i < 5000; ++i) {
+  for (int i = 0; i < cycles; ++i) {
     h.cycles(1);
     peak = std::max(peak, std::abs(h.x->NcToPlc.SetVelo));
   }
+  return peak;
+}
+
+}  // namespace
+
+TEST_CASE("a halt after a reset during the error ramp brakes with the ramp's jerk and keeps Vmax",
+          "[kernel][errors]") {
+  // Fuzz finding K24: the error ramp of the case above (at J 1e6, K5) is still running when a
+  // reset clears the error (it finishes first), and an MC_Halt with D = 0 and J = 0 then takes
+  // the running motion's D and J. The ramp is that running motion; before the fix the halt took
+  // the axis's defaults (J 50000) instead: 20000² / (2·50000) = 4000 mm/s more.
+  kt::Harness h;
+  const double v0 = reset_during_error_ramp(h);
+  const uint16_t halt = h.post(kt::simple(plc::CommandType::kHalt));
+  const double peak = peak_set_speed(h, 5000);
   CHECK(h.state_of(halt) == plc::CommandState::kDone);
   CHECK(peak <= 2200.0);
   CHECK(peak == Approx(v0 + 200.0).margin(25.0));  // a ramped out at J 1e6, as the ramp would
   CHECK(h.x->NcToPlc.SetVelo == 0.0);
+}
+
+TEST_CASE("a move after a reset during the error ramp keeps Vmax", "[kernel][errors]") {
+  // K24's situation with a new positioning (J = 0: the axis's 50000) instead of a halt: K4's rule
+  // applies with the error ramp as the running job, whose jerk (1e6, K5) the move takes where its
+  // own would pass the max velocity (20000² / (2·50000) = 4000 mm/s more).
+  kt::Harness h;
+  reset_during_error_ramp(h);
+  const uint16_t move = h.post(kt::move_absolute(0.0, 1000.0));
+  const double peak = peak_set_speed(h, 10000);
+  CHECK(h.state_of(move) == plc::CommandState::kDone);
+  CHECK(peak <= 2200.0);
+  CHECK(h.x->NcToPlc.SetPos == Approx(0.0).margin(1e-9));
 }
