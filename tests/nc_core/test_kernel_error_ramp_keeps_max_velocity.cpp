@@ -9,32 +9,20 @@
 
 #include "kernel_harness.hpp"
 
-TEST_CASE("the error ramp from a hard acceleration keeps Vmax", "[kernel][errors]") {
-  // Seed axis: max velocity 2200 mm/s, emergency deceleration 10000 mm/s², emergency jerk 1e5
-  // mm/s³. A positioning at 2200 mm/s with A 20000 and J 1e6 until v >= 1700 mm/s (a = 20000
-  // there), then the plus feed enable is removed (0x4358). At the emergency jerk the acceleration
-  // would add 20000² / (2·1e5) = 2000 mm/s (3700 mm/s); at J 1e6 it adds 200 mm/s.
-  kt::Harness h;
-  h.post(kt::move_absolute(100000.0, 2200.0, 20000.0, 20000.0, 1e6));
-  REQUIRE(h.cycles_until([&] { return h.x->NcToPlc.SetVelo >= 1700.0; }, 1000) > 0);
-  REQUIRE(h.x->NcToPlc.SetAcc == Approx(20000.0));
-  const double v0 = h.x->NcToPlc.SetVelo;
-  kt::set_enables(*h.x, true, false, true);
+namespace {
+
+// The largest |SetVelo| over the next `cycles` cycles.
+double peak_set_speed(kt::Harness& h, int cycles) {
   double peak = 0.0;
-  for (int i = 0; i < 5000; ++i) {
+  for (int i = 0; i < cycles; ++i) {
     h.cycles(1);
     peak = std::max(peak, std::abs(h.x->NcToPlc.SetVelo));
   }
-  CHECK(h.x->NcToPlc.ErrorCode == 0x4358U);
-  CHECK(peak <= 2200.0);
-  CHECK(peak == Approx(v0 + 200.0).margin(25.0));  // a ramped out at J 1e6 (one cycle's a more)
-  CHECK(h.x->NcToPlc.SetVelo == 0.0);
+  return peak;
 }
 
-namespace {
-
-// The motion of the first case, its plus feed enable removed (the error ramp starts at J 1e6),
-// given back two cycles later and the axis reset: the ramp, which a reset lets finish, still
+// The motion of the first case below, its plus feed enable removed (the error ramp starts at J
+// 1e6), given back two cycles later and the axis reset: the ramp, which a reset lets finish, still
 // brings a > 15000 mm/s² back. Returns the set velocity before the error.
 double reset_during_error_ramp(kt::Harness& h) {
   h.post(kt::move_absolute(100000.0, 2200.0, 20000.0, 20000.0, 1e6));
@@ -51,17 +39,25 @@ double reset_during_error_ramp(kt::Harness& h) {
   return v0;
 }
 
-// The largest |SetVelo| over the next `cycles` cycles.
-double peak_set_speed(kt::Harness& h, int cycles) {
-  double peak = 0.0;
-  for (int i = 0; i < cycles; ++i) {
-    h.cycles(1);
-    peak = std::max(peak, std::abs(h.x->NcToPlc.SetVelo));
-  }
-  return peak;
-}
-
 }  // namespace
+
+TEST_CASE("the error ramp from a hard acceleration keeps Vmax", "[kernel][errors]") {
+  // Seed axis: max velocity 2200 mm/s, emergency deceleration 10000 mm/s², emergency jerk 1e5
+  // mm/s³. A positioning at 2200 mm/s with A 20000 and J 1e6 until v >= 1700 mm/s (a = 20000
+  // there), then the plus feed enable is removed (0x4358). At the emergency jerk the acceleration
+  // would add 20000² / (2·1e5) = 2000 mm/s (3700 mm/s); at J 1e6 it adds 200 mm/s.
+  kt::Harness h;
+  h.post(kt::move_absolute(100000.0, 2200.0, 20000.0, 20000.0, 1e6));
+  REQUIRE(h.cycles_until([&] { return h.x->NcToPlc.SetVelo >= 1700.0; }, 1000) > 0);
+  REQUIRE(h.x->NcToPlc.SetAcc == Approx(20000.0));
+  const double v0 = h.x->NcToPlc.SetVelo;
+  kt::set_enables(*h.x, true, false, true);
+  const double peak = peak_set_speed(h, 5000);
+  CHECK(h.x->NcToPlc.ErrorCode == 0x4358U);
+  CHECK(peak <= 2200.0);
+  CHECK(peak == Approx(v0 + 200.0).margin(25.0));  // a ramped out at J 1e6 (one cycle's a more)
+  CHECK(h.x->NcToPlc.SetVelo == 0.0);
+}
 
 TEST_CASE("a halt after a reset during the error ramp brakes with the ramp's jerk and keeps Vmax",
           "[kernel][errors]") {
