@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <numbers>
 #include <random>
 #include <vector>
 
@@ -50,7 +51,7 @@ void add_around(std::vector<double>& out, double x, int ulps) {
   }
 }
 
-const double kFactors[] = {360.0, 0.1, 7.3, 1.0 / 3.0, 0.25, 1e-3, 1e9, 2.0 * M_PI};
+const double kFactors[] = {360.0, 0.1, 7.3, 1.0 / 3.0, 0.25, 1e-3, 1e9, 2.0 * std::numbers::pi};
 
 std::vector<double> edge_positions(double factor) {
   const double inf = std::numeric_limits<double>::infinity();

@@ -3,6 +3,7 @@
 // line within a twentieth of a pixel (plus the 0.01 px rounding of the coordinates).
 #include <cmath>
 #include <cstdlib>
+#include <numbers>
 #include <string>
 #include <utility>
 #include <vector>
@@ -56,7 +57,7 @@ TEST_CASE("every dropped sample lies on the drawn line within 0.05 px") {
   for (int k = 0; k <= 3000; ++k) {
     const double t = 0.001 * k;
     time.push_back(t);
-    wave.push_back(std::sin(t * 3.0 * M_PI / 2.0 / 3.0) + 0.2 * std::sin(40.0 * t));
+    wave.push_back(std::sin(t * 3.0 * std::numbers::pi / 2.0 / 3.0) + 0.2 * std::sin(40.0 * t));
   }
   const Points points = path_points(plot(time, wave));
   REQUIRE(points.size() >= 2);
