@@ -1,6 +1,7 @@
-// SPEC D4, 70200: a new list while an involved axis moves (the target's drive, or the program of
-// an old or a new source) stops the target: axis error 70200, its list off, its drive braking at
-// the emergency deceleration to rest; other axes are not disturbed.
+// SPEC D4, 70200: a new list while an involved axis moves (the target's drive, the program of an
+// old or a new source, or for a list switched off the target's own program) stops the target:
+// axis error 70200, its list off, its drive braking at the emergency deceleration to rest; other
+// axes are not disturbed.
 #include <catch2/catch.hpp>
 
 #include "hli_stage_rig.hpp"
@@ -92,4 +93,38 @@ TEST_CASE("70200: a new source moving, or the target's drive moving, stops the t
     CHECK(rig.unit(1).state_r.error_r == 0);
     CHECK(rig.unit(1).state_r.active_r);
   }
+}
+
+TEST_CASE("70200: switched off while the target's own program moves (K25), coupled or braking",
+          "[hli]") {
+  // Switched off, the drive follows the target's program: that program is an axis involved.
+  Rig rig = coupled_rig();
+  run(rig, 1, 300.0, 10);  // the program only (no self entry): the drive stays at 0
+  REQUIRE(rig.d[1] == 0.0);
+  rig.command(1, {inactive()});
+  run(rig, 1, 300.0, 1);
+  CHECK(rig.stop[1] == plc::ErrorCode::kHliChangeWhileMoving);
+  CHECK(rig.unit(1).state_r.error_r == 70200);
+  CHECK_FALSE(rig.unit(1).state_r.active_r);
+  CHECK(rig.d[1] == 0.0);
+  CHECK(rig.dv[1] == 0.0);  // before the fix: 300 mm/s in this cycle
+
+  // The same on the brake's hold while the program still moves: the drive stays.
+  rig.command(1, {inactive()});
+  run(rig, 1, 300.0, 1);
+  CHECK(rig.stop[1] == plc::ErrorCode::kHliChangeWhileMoving);
+  CHECK(rig.dv[1] == 0.0);
+  run(rig, 1, 300.0, 20);
+  CHECK(rig.d[1] == 0.0);
+  CHECK(rig.dv[1] == 0.0);
+
+  // Once the program rests the drive follows it from where it stands; a switch-off is taken.
+  rig.qv[1] = 0.0;
+  rig.cycle();
+  rig.move(1, 5.0, 100.0);
+  CHECK(rig.d[1] == Approx(5.0).margin(1e-9));
+  rig.command(1, {inactive()});
+  rig.cycle();
+  CHECK(rig.stop[1] == plc::ErrorCode::kNone);
+  CHECK(rig.unit(1).state_r.error_r == 0);
 }

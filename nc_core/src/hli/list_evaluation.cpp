@@ -89,10 +89,13 @@ bool ListEvaluation::makes_loop(std::size_t target, const HliState::Candidate& l
   return false;
 }
 
-// 70200: the target's drive, or any old or new source's program, moves.
+// 70200: the target's drive, or any old or new source's program, moves; for a list switched off
+// also the target's own program, which drives it from then on (else the drive would take the
+// program's velocity in one cycle: fuzz finding K25).
 bool ListEvaluation::involved_axis_moves(std::size_t target,
                                          const HliState::Candidate& list) const noexcept {
   if (s_.dv_(ix(target)) != 0.0) return true;
+  if (list.count == 0 && s_.qv_(ix(target)) != 0.0) return true;
   const HliState::Target& t = s_.targets_[target];
   for (std::size_t e = 0; e < t.count; ++e) {
     if (t.state == HliState::State::kCoupled && s_.qv_(ix(t.entries[e].source)) != 0.0) return true;
