@@ -30,6 +30,11 @@
 //    rests;
 //  - a two-speed axis (E4): SetVelo is 0 or ± rapid_velocity / creep_velocity, SetAcc 0,
 //    |ActVelo| at most rapid_velocity (its own limits replace the servo ones);
+//  - the set velocity never steps (fuzz finding K25): from one cycle to the next it moves by at
+//    most the cycle time × the acceleration bound of this or the last cycle (the axis's, or an
+//    HLI target's hli() bound), while the controller enable is on in both cycles; not on a gear
+//    slave (coupled, decoupled in motion, or in the cycle it couples or leaves), nor after fed
+//    external set values (B8: a packet may step) until the axis rests;
 //  - every command number posted is answered (leaves kPosted) within 2 NC cycles, its answer
 //    slot is never lost, the states only move forward (posted → active → reached → an outcome),
 //    and an outcome, once given, never changes.
@@ -79,8 +84,10 @@ FUZZ_CHECKER inline const char* non_finite_field(const plc::NCTOPLC_AXIS_REF& n)
 
 class AxisWatch {
  public:
-  explicit AxisWatch(const nc::AxisConfig& config) noexcept
-      : base_velocity_(config.max_velocity),
+  // `cycle_time`: the kernel's NC cycle in s.
+  AxisWatch(const nc::AxisConfig& config, double cycle_time) noexcept
+      : cycle_time_(cycle_time),
+        base_velocity_(config.max_velocity),
         base_acceleration_(
             std::max({config.acceleration, config.deceleration, config.emergency_deceleration})),
         delay_(config.ext_setpoint_delay),
@@ -115,6 +122,7 @@ class AxisWatch {
   // packet's, and a stop or the error ramp starts from it (docs/behaviour.md): with its
   // acceleration a the jerk-limited stop first ramps a to 0, passing |v| + a² / (2 J) on the way.
   void allow_external(double v, double a) noexcept {
+    fed_ = true;  // a packet may step the set velocity (whatever its values)
     if (!std::isfinite(v) || !std::isfinite(a)) return;
     velocity_ += std::fabs(v) + std::fabs(a) * delay_ + a * a / (2.0 * stop_jerk_);
     acceleration_ += std::fabs(a);
@@ -174,6 +182,7 @@ class AxisWatch {
       return check_answers(axis.Mailbox);
     }
     const bool coupled = plc::test_bit(n.StateDWord, plc::kStateCoupled);
+    if (const char* broken = check_step(axis, coupled && !hli_target_)) return broken;
     // rest() ends it at once when at rest; an HLI target's drive keeps the bound of hli().
     if (was_coupled_ && !coupled && !was_hli_target_) decoupled_ = true;
     was_coupled_ = coupled;
@@ -244,6 +253,27 @@ class AxisWatch {
     int age = 0;  // NC cycles since it was posted
     bool live = false;
   };
+
+  // K25: |SetVelo - last cycle's| <= cycle time × the acceleration bound. Called before check()
+  // updates its state of the last cycle (last_v_, was_coupled_, was_hli_target_).
+  FUZZ_CHECKER const char* check_step(const plc::AXIS_REF& axis, bool gear) noexcept {
+    const plc::NCTOPLC_AXIS_REF& n = axis.NcToPlc;
+    const bool enabled = plc::test_bit(axis.PlcToNc.ControlDWord, plc::kControlEnable);
+    const bool external = plc::test_bit(n.StateDWord, plc::kStateExtSetPointGenEnabled);
+    const bool gear_before = was_coupled_ && !was_hli_target_;
+    const double bound = std::max(acceleration_, hli_acceleration_);
+    const bool checked = enabled && was_enabled_ && !gear && !gear_before && !decoupled_ && !fed_ &&
+                         !external && !was_external_;
+    const double allowed = cycle_time_ * std::max(bound, last_bound_) * (1.0 + 1e-6) +
+                           1e-9 * (std::fabs(n.SetVelo) + std::fabs(last_v_)) + 1e-9;
+    was_enabled_ = enabled;
+    was_external_ = external;
+    last_bound_ = bound;
+    if (checked && std::fabs(n.SetVelo - last_v_) > allowed) {
+      return "set velocity stepped by more than the acceleration bound allows in one cycle";
+    }
+    return nullptr;
+  }
 
   static bool near(double x, double y) noexcept {
     return std::fabs(x - y) <= 1e-9 * (std::fabs(x) + std::fabs(y)) + 1e-9;
@@ -340,6 +370,7 @@ class AxisWatch {
     decoupled_ = false;
     hli_velocity_ = 0.0;
     hli_acceleration_ = 0.0;
+    fed_ = false;
   }
 
   static int rank(plc::CommandState s) noexcept {
@@ -392,6 +423,7 @@ class AxisWatch {
   long posted_total_ = 0;
   long answered_total_ = 0;
 
+  double cycle_time_;
   double base_velocity_;
   double base_acceleration_;
   double delay_;
@@ -426,6 +458,11 @@ class AxisWatch {
   bool was_hli_target_ = false;
   double hli_velocity_ = 0.0;
   double hli_acceleration_ = 0.0;
+  // The set velocity's steps (check_step()).
+  bool fed_ = false;  // external set values fed since the axis last rested
+  bool was_enabled_ = false;
+  bool was_external_ = false;
+  double last_bound_ = 0.0;
   // Two-speed axis.
   bool two_speed_;
   double rapid_;

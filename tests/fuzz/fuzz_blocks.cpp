@@ -665,7 +665,11 @@ struct Program {
       const std::size_t s = static_cast<std::size_t>(
           std::find(ids.begin(), ids.begin() + static_cast<std::ptrdiff_t>(axes.size()), e.ax_nr) -
           ids.begin());
-      if (s >= axes.size() || programs[s].gear_slave) {
+      // A source without its controller enable: its program position follows its actual one,
+      // a step the target's drive follows (K26, open: docs/reliability.md), as a gear slave
+      // follows such a master (AxisWatch::check_following).
+      if (s >= axes.size() || programs[s].gear_slave ||
+          !plc::test_bit(axes[s]->PlcToNc.ControlDWord, plc::kControlEnable)) {
         velocity = acceleration = kUnbounded;
         continue;
       }
@@ -732,7 +736,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
     if (hli) hli_config(config, i, in.byte(), in);
     p.axes.push_back(&p.kernel.add_axis(config));
     p.ids[i] = p.kernel.config(config.name).id;
-    p.watches.emplace_back(config);
+    p.watches.emplace_back(config, p.kernel.cycle_time());
     p.names.push_back(config.name);
     p.two_speed_images.push_back(
         config.kind == nc::AxisKind::kTwoSpeed ? &p.kernel.two_speed_output(config.name) : nullptr);

@@ -137,7 +137,7 @@ class Soak {
       c.override_type = 1 + static_cast<int>(i % 4);
       configs_.push_back(c);
       axes_.push_back(&kernel_.add_axis(c));
-      watches_.emplace_back(c);
+      watches_.emplace_back(c, kernel_.cycle_time());
       AxisProgram& a = programs_[i];
       a.power.Enable = a.power.Enable_Positive = a.power.Enable_Negative = true;
       a.axis_error.Enable = true;
