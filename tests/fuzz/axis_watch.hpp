@@ -34,7 +34,8 @@
 //    most the cycle time × the acceleration bound of this or the last cycle (the axis's, or an
 //    HLI target's hli() bound), while the controller enable is on in both cycles; not on a gear
 //    slave (coupled, decoupled in motion, or in the cycle it couples or leaves), nor after fed
-//    external set values (B8: a packet may step) until the axis rests;
+//    external set values (B8: a packet may step) or, on an HLI target, a source that may step
+//    (fed, or without its controller enable: K26) until the axis rests;
 //  - every command number posted is answered (leaves kPosted) within 2 NC cycles, its answer
 //    slot is never lost, the states only move forward (posted → active → reached → an outcome),
 //    and an outcome, once given, never changes.
@@ -150,13 +151,17 @@ class AxisWatch {
   // HLI programs, set before every check(): `target` while the axis has an HLI list in force;
   // `velocity` and `acceleration` bound its drive's set values by the lists of this cycle and the
   // last (Σ |K| × the sources' program limits), +inf where the PLC cannot bound them (a gear
-  // slave among the axes). The bound stays until the axis rests (a drive braking after its list
-  // went off starts from at most that velocity).
-  void hli(bool target, double velocity, double acceleration) noexcept {
+  // slave among the axes); `steps` when a source may step (may_step(), or without its
+  // controller enable), so the drive may too. These stay until the axis rests (a drive braking
+  // after its list went off starts from at most that velocity).
+  void hli(bool target, double velocity, double acceleration, bool steps) noexcept {
     hli_target_ = target;
     hli_velocity_ = std::max(hli_velocity_, velocity);
     hli_acceleration_ = std::max(hli_acceleration_, acceleration);
+    hli_steps_ = hli_steps_ || steps;
   }
+  // External set values were fed since the axis last rested: its set velocity may step.
+  bool may_step() const noexcept { return fed_; }
 
   // --- After the PLC's calls of one cycle: the commands it posted (kernel drained the rest).
   FUZZ_CHECKER void posted(const plc::AXIS_REF& axis) noexcept {
@@ -263,7 +268,7 @@ class AxisWatch {
     const bool gear_before = was_coupled_ && !was_hli_target_;
     const double bound = std::max(acceleration_, hli_acceleration_);
     const bool checked = enabled && was_enabled_ && !gear && !gear_before && !decoupled_ && !fed_ &&
-                         !external && !was_external_;
+                         !hli_steps_ && !external && !was_external_;
     const double allowed = cycle_time_ * std::max(bound, last_bound_) * (1.0 + 1e-6) +
                            1e-9 * (std::fabs(n.SetVelo) + std::fabs(last_v_)) + 1e-9;
     was_enabled_ = enabled;
@@ -371,6 +376,7 @@ class AxisWatch {
     hli_velocity_ = 0.0;
     hli_acceleration_ = 0.0;
     fed_ = false;
+    hli_steps_ = false;
   }
 
   static int rank(plc::CommandState s) noexcept {
@@ -459,7 +465,8 @@ class AxisWatch {
   double hli_velocity_ = 0.0;
   double hli_acceleration_ = 0.0;
   // The set velocity's steps (check_step()).
-  bool fed_ = false;  // external set values fed since the axis last rested
+  bool fed_ = false;        // external set values fed since the axis last rested
+  bool hli_steps_ = false;  // an HLI source may have stepped since the axis last rested
   bool was_enabled_ = false;
   bool was_external_ = false;
   double last_bound_ = 0.0;

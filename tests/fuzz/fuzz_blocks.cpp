@@ -636,8 +636,9 @@ struct Program {
     double acceleration = 0.0;
     double last_velocity = 0.0;
     double last_acceleration = 0.0;
-    bound_list(i, state.desc, velocity, acceleration);
-    bound_list(i, hli_last[i], last_velocity, last_acceleration);
+    bool steps = false;
+    bound_list(i, state.desc, velocity, acceleration, steps);
+    bound_list(i, hli_last[i], last_velocity, last_acceleration, steps);
     velocity = std::max(velocity, last_velocity);
     acceleration = std::max(acceleration, last_acceleration);
     if (fuzz::g_trace) {
@@ -648,12 +649,15 @@ struct Program {
           cycles, i, state.active_r ? 1 : 0, state.error_r, b.Busy ? 1 : 0, b.Done ? 1 : 0,
           b.Error ? 1 : 0, b.ErrorID, velocity, acceleration);
     }
-    watches[i].hli(state.active_r, velocity, acceleration);
+    watches[i].hli(state.active_r, velocity, acceleration, steps);
     hli_last[i] = state.desc;
   }
+  // `steps`: set when a source of the list may step its program velocity, which the target's
+  // drive then follows: fed external set values (B8), or no controller enable (its program
+  // position follows its actual one; K26, open: docs/reliability.md).
   void bound_list(std::size_t target,
                   const std::array<plc::hli::HLI_AX_COUPLING_STATE_DESC, 8>& list, double& velocity,
-                  double& acceleration) const {
+                  double& acceleration, bool& steps) const {
     constexpr double kUnbounded = std::numeric_limits<double>::infinity();
     if (programs[target].gear_slave) velocity = acceleration = kUnbounded;
     for (const plc::hli::HLI_AX_COUPLING_STATE_DESC& e : list) {
@@ -665,14 +669,12 @@ struct Program {
       const std::size_t s = static_cast<std::size_t>(
           std::find(ids.begin(), ids.begin() + static_cast<std::ptrdiff_t>(axes.size()), e.ax_nr) -
           ids.begin());
-      // A source without its controller enable: its program position follows its actual one,
-      // a step the target's drive follows (K26, open: docs/reliability.md), as a gear slave
-      // follows such a master (AxisWatch::check_following).
-      if (s >= axes.size() || programs[s].gear_slave ||
-          !plc::test_bit(axes[s]->PlcToNc.ControlDWord, plc::kControlEnable)) {
+      if (s >= axes.size() || programs[s].gear_slave) {
         velocity = acceleration = kUnbounded;
         continue;
       }
+      steps = steps || watches[s].may_step() ||
+              !plc::test_bit(axes[s]->PlcToNc.ControlDWord, plc::kControlEnable);
       velocity += k * watches[s].velocity_limit();
       acceleration += k * watches[s].acceleration_limit();
     }
