@@ -148,15 +148,17 @@ Profile finish_stop(const KinematicState& start, double target, double dir, cons
         }
       }
     }
-    // Start at the switch in closed form where the stop at the piece's end is a rise and the final
-    // ramp (stop_point.hpp, switch_on_rise: on the benchmark set 1.65 instead of 3.28 evaluations
-    // per root on jerk pieces, 1.68 instead of 2.15 on holds). Elsewhere start where
+    // Start at the switch in closed form where the stop at the piece's start (or else at its end)
+    // is a rise and the final ramp up to the switch (stop_point.hpp, switch_in_piece: on the
+    // benchmark set 1.07 evaluations per root; 1.39 from the end alone, 1.65 instead of 3.28 on
+    // jerk pieces and 1.68 instead of 2.15 on holds before that). Elsewhere start where
     // S - S(lo) = c (tau - lo)^n would meet the goal, with the exponent it typically has over a
     // piece: 2 on a hold (a constant), 4 on a jerk piece (2.5 evaluations per root instead of 3.4
     // from the secant point). The root finder also uses that power law when its local model
     // misleads it.
-    double x0 =
-        lo == 0.0 ? detail::switch_on_rise(s, push[i].t, jerk, s_next - goal, stop_bounds) : NAN;
+    double x0 = lo == 0.0
+                    ? detail::switch_in_piece(s, push[i].t, jerk, f_lo, s_next - goal, stop_bounds)
+                    : NAN;
     if (!(x0 > 0.0 && x0 < push[i].t)) {
       const double r0 = std::clamp(
           lo == 0.0 ? (goal - s_here) / (s_next - s_here) : -f_lo / ((s_next - goal) - f_lo), 0.0,
