@@ -177,14 +177,16 @@ Profile finish_stop(const KinematicState& start, double target, double dir, cons
       const double a_t = s.a + jerk * t_at;
       const double v_t = s.v + t_at * (s.a + (0.5 * jerk) * t_at);
       const double p_t = s.p + t_at * (s.v + t_at * (0.5 * s.a + t_at * jerk6));
-      detail::StopAlong d{};
-      if (!detail::stop_point_rise(v_t, a_t, jerk, stop_bounds, d)) break;
-      const double f = p_t + d.distance - goal;
-      const double tol = kRootTolerance * (std::abs(p_t) + std::abs(d.distance) + goal);
+      detail::RisePoint rise;
+      if (!rise.at(v_t, a_t, stop_bounds)) break;
+      const double f = p_t + rise.distance - goal;
+      const double tol = kRootTolerance * (std::abs(p_t) + std::abs(rise.distance) + goal);
       if (std::abs(f) <= tol) {
         tau = t_at;
         break;
       }
+      detail::StopAlong d{};
+      rise.slopes(jerk, stop_bounds, d);
       if (f < 0.0) {
         lo = t_at;
         f_lo = f;

@@ -243,30 +243,49 @@ inline StopAlong stop_point_along(double v0, double a0, double g, const StopBoun
 // first shape above), in closed form: D = s (m^2 (a - m) - a^3 / 6) / J^2 (mirrored a), S' and S''
 // as stop_point_along's. For plan_position's switch search on that shape (issue 17): about a third
 // of stop_point_along's instructions, without its branches or piece integration; D differs from the
-// integrated pieces by rounding only. Returns false (out untouched) where the stop has another
-// shape (the same decisions as stop_point_along's).
+// integrated pieces by rounding only. In two parts: RisePoint::at decides the shape (false where
+// the stop has another one: the same decisions as stop_point_along's) and gives D; slopes() S' and
+// S'', which the search only needs where D does not settle the root (issue 17: their division
+// and products were computed at every accepted point too).
+struct RisePoint {
+  double s = 0.0;         // the stop's mirror sign
+  double a = 0.0;         // the mirrored acceleration
+  double m = 0.0;         // a_meet
+  double distance = 0.0;  // D
+  bool at(double v0, double a0, const StopBounds& b) noexcept {
+    const double jerk = b.jerk;
+    s = natural_velocity(v0, a0, jerk) > 0.0 ? -1.0 : 1.0;
+    const double v = s * v0;
+    a = s * a0;
+    if (a > b.am_limit) return false;
+    const double meet2 = 0.5 * (a * a - (2.0 * jerk) * v);
+    if (!(meet2 > kStopRel * (a * a + 2.0 * jerk * std::abs(v)))) return false;
+    m = std::sqrt(meet2);
+    if (!(m <= b.am && m > a)) return false;
+    distance = s * ((meet2 * (a - m) - (1.0 / 6.0) * (a * a * a)) * (b.inv_jerk * b.inv_jerk));
+    return true;
+  }
+  // S' and S'' along a push of jerk g (into out.d, out.dd).
+  void slopes(double g, const StopBounds& b, StopAlong& out) const noexcept {
+    const double ij = b.inv_jerk;
+    const double ij2 = ij * ij;
+    const double gs = s * g;
+    const double lag = -s * (b.jerk - gs);
+    const double am_ratio = 0.75 * a / m;
+    const double d_a = (m - a) * (m - 0.5 * a) * ij2;
+    const double d_va = (am_ratio - 1.0) * ij;
+    const double d_aa = (2.0 * a - 1.5 * m - am_ratio * a) * ij2;
+    out.d = lag * d_a;
+    out.dd = lag * (d_va * a + d_aa * gs);
+  }
+};
+// Both parts at once: false (out untouched) where the stop has another shape.
 inline bool stop_point_rise(double v0, double a0, double g, const StopBounds& b,
                             StopAlong& out) noexcept {
-  const double jerk = b.jerk;
-  const double s = natural_velocity(v0, a0, jerk) > 0.0 ? -1.0 : 1.0;
-  const double v = s * v0;
-  const double a = s * a0;
-  if (a > b.am_limit) return false;
-  const double meet2 = 0.5 * (a * a - (2.0 * jerk) * v);
-  if (!(meet2 > kStopRel * (a * a + 2.0 * jerk * std::abs(v)))) return false;
-  const double m = std::sqrt(meet2);
-  if (!(m <= b.am && m > a)) return false;
-  const double ij = b.inv_jerk;
-  const double ij2 = ij * ij;
-  const double gs = s * g;
-  const double lag = -s * (jerk - gs);
-  const double am_ratio = 0.75 * a / m;
-  const double d_a = (m - a) * (m - 0.5 * a) * ij2;
-  const double d_va = (am_ratio - 1.0) * ij;
-  const double d_aa = (2.0 * a - 1.5 * m - am_ratio * a) * ij2;
-  out.distance = s * ((meet2 * (a - m) - (1.0 / 6.0) * (a * a * a)) * ij2);
-  out.d = lag * d_a;
-  out.dd = lag * (d_va * a + d_aa * gs);
+  RisePoint r;
+  if (!r.at(v0, a0, b)) return false;
+  out.distance = r.distance;
+  r.slopes(g, b, out);
   return true;
 }
 
