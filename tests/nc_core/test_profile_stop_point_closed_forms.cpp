@@ -13,7 +13,10 @@
 //   over
 //     a random time, with the stop a rise and the final ramp going forwards at a random point and
 //     at the end, it finds that point from the stop point's excess at the end, to 1e-9 of the time
-//     (or, where S barely moves over the piece, to 1e-13 of S).
+//     (or, where S barely moves over the piece, to 1e-13 of S);
+//   - switch_from the piece's start: the same from the stop point's shortfall at the start, with
+//     the stop a rise and the ramp at the start and at the point (the end may have left the shape);
+//     where the stop at the point has left it, no start.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -183,4 +186,58 @@ TEST_CASE("switch_on_rise: the switch on a hold or a rise where the stop is a ri
   CHECK(found > 20'000);
   CHECK(missed < found / 100);
   CHECK(off == 0);
+}
+
+TEST_CASE("switch_from the piece's start: the switch where the start and the root have the shape",
+          "[profile][stop_point]") {
+  long found = 0, missed = 0, off = 0, beyond = 0, beyond_taken = 0;
+  for_each_draw(0x57A27ull, [&](const Draw& d, const nc::detail::StopBounds& b,
+                                profile_problems::Rng& rng) {
+    const double g = d.g == 0.0 ? 0.0 : d.limits.jerk;
+    if (g == 0.0 && !(d.a > 0.0)) return;
+    const double span =
+        std::max(d.limits.deceleration / d.limits.jerk, std::abs(d.v) / d.limits.deceleration);
+    const double t_piece = span * rng.log_uniform(1e-6, 1.0);
+    const double tau = t_piece * rng.uniform(0.0, 1.0);
+    // S (relative to the piece's start), and whether the stop there is a rise and the ramp
+    // going forwards.
+    auto stop_point = [&](double t, double& out) {
+      const double a_t = d.a + g * t;
+      const double v_t = d.v + t * (d.a + 0.5 * g * t);
+      const double p_t = t * (d.v + t * (0.5 * d.a + t * g / 6.0));
+      nc::detail::StopAlong rise{0.0, 0.0, 0.0};
+      const bool shape = nc::detail::natural_velocity(v_t, a_t, d.limits.jerk) > 0.0 &&
+                         nc::detail::stop_point_rise(v_t, a_t, g, b, rise);
+      out = p_t + nc::detail::stop_point_along(v_t, a_t, g, b).distance;
+      return shape;
+    };
+    double s_start = 0.0, s_root = 0.0;
+    if (!stop_point(0.0, s_start)) return;
+    const bool root_shape = stop_point(tau, s_root);
+    if (!(s_root > s_start)) return;
+    const double x = nc::detail::switch_from({0.0, d.v, d.a}, 0.0, g, s_start - s_root, false, b);
+    if (!root_shape) {
+      // The stop has left the shape before the root (a rise to A- and a hold there): no start,
+      // or one at the root all the same (within rounding of the shape's boundary).
+      ++beyond;
+      if (x == x && !(std::abs(x - tau) <= 1e-6 * t_piece)) ++beyond_taken;
+      return;
+    }
+    if (!(x > 0.0 && x < t_piece)) {
+      ++missed;
+      return;
+    }
+    ++found;
+    double s_x = 0.0;
+    if (!(std::abs(x - tau) <= 1e-9 * t_piece) &&
+        !(stop_point(x, s_x) &&
+          std::abs(s_x - s_root) <= 1e-13 * (std::abs(s_start) + std::abs(s_root)))) {
+      ++off;
+    }
+  });
+  CHECK(found > 20'000);
+  CHECK(missed < found / 100);
+  CHECK(off == 0);
+  CHECK(beyond > 1'000);
+  CHECK(beyond_taken == 0);
 }

@@ -243,30 +243,49 @@ inline StopAlong stop_point_along(double v0, double a0, double g, const StopBoun
 // first shape above), in closed form: D = s (m^2 (a - m) - a^3 / 6) / J^2 (mirrored a), S' and S''
 // as stop_point_along's. For plan_position's switch search on that shape (issue 17): about a third
 // of stop_point_along's instructions, without its branches or piece integration; D differs from the
-// integrated pieces by rounding only. Returns false (out untouched) where the stop has another
-// shape (the same decisions as stop_point_along's).
+// integrated pieces by rounding only. In two parts: RisePoint::at decides the shape (false where
+// the stop has another one: the same decisions as stop_point_along's) and gives D; slopes() S' and
+// S'', which the search only needs where D does not settle the root (issue 17: their division
+// and products were computed at every accepted point too).
+struct RisePoint {
+  double s = 0.0;         // the stop's mirror sign
+  double a = 0.0;         // the mirrored acceleration
+  double m = 0.0;         // a_meet
+  double distance = 0.0;  // D
+  bool at(double v0, double a0, const StopBounds& b) noexcept {
+    const double jerk = b.jerk;
+    s = natural_velocity(v0, a0, jerk) > 0.0 ? -1.0 : 1.0;
+    const double v = s * v0;
+    a = s * a0;
+    if (a > b.am_limit) return false;
+    const double meet2 = 0.5 * (a * a - (2.0 * jerk) * v);
+    if (!(meet2 > kStopRel * (a * a + 2.0 * jerk * std::abs(v)))) return false;
+    m = std::sqrt(meet2);
+    if (!(m <= b.am && m > a)) return false;
+    distance = s * ((meet2 * (a - m) - (1.0 / 6.0) * (a * a * a)) * (b.inv_jerk * b.inv_jerk));
+    return true;
+  }
+  // S' and S'' along a push of jerk g (into out.d, out.dd).
+  void slopes(double g, const StopBounds& b, StopAlong& out) const noexcept {
+    const double ij = b.inv_jerk;
+    const double ij2 = ij * ij;
+    const double gs = s * g;
+    const double lag = -s * (b.jerk - gs);
+    const double am_ratio = 0.75 * a / m;
+    const double d_a = (m - a) * (m - 0.5 * a) * ij2;
+    const double d_va = (am_ratio - 1.0) * ij;
+    const double d_aa = (2.0 * a - 1.5 * m - am_ratio * a) * ij2;
+    out.d = lag * d_a;
+    out.dd = lag * (d_va * a + d_aa * gs);
+  }
+};
+// Both parts at once: false (out untouched) where the stop has another shape.
 inline bool stop_point_rise(double v0, double a0, double g, const StopBounds& b,
                             StopAlong& out) noexcept {
-  const double jerk = b.jerk;
-  const double s = natural_velocity(v0, a0, jerk) > 0.0 ? -1.0 : 1.0;
-  const double v = s * v0;
-  const double a = s * a0;
-  if (a > b.am_limit) return false;
-  const double meet2 = 0.5 * (a * a - (2.0 * jerk) * v);
-  if (!(meet2 > kStopRel * (a * a + 2.0 * jerk * std::abs(v)))) return false;
-  const double m = std::sqrt(meet2);
-  if (!(m <= b.am && m > a)) return false;
-  const double ij = b.inv_jerk;
-  const double ij2 = ij * ij;
-  const double gs = s * g;
-  const double lag = -s * (jerk - gs);
-  const double am_ratio = 0.75 * a / m;
-  const double d_a = (m - a) * (m - 0.5 * a) * ij2;
-  const double d_va = (am_ratio - 1.0) * ij;
-  const double d_aa = (2.0 * a - 1.5 * m - am_ratio * a) * ij2;
-  out.distance = s * ((meet2 * (a - m) - (1.0 / 6.0) * (a * a * a)) * ij2);
-  out.d = lag * d_a;
-  out.dd = lag * (d_va * a + d_aa * gs);
+  RisePoint r;
+  if (!r.at(v0, a0, b)) return false;
+  out.distance = r.distance;
+  r.slopes(g, b, out);
   return true;
 }
 
@@ -300,38 +319,48 @@ inline double cbrt_above(double x) noexcept {
   return (2.0 * y + x / (y * y)) * (1.0 / 3.0);
 }
 
-// The switch on a push piece in closed form where the stop from the piece's end is a rise to
-// a_meet = m and the final ramp with the motion going on forwards (frame s = -1, the shape of
-// stop_point_rise), for plan_position's switch search to start from (issue 17: the power law put
-// its first point 5-50 % off on jerk pieces, and every further evaluation of the stop point is a
-// chain of two square roots and two divisions on the plan's critical path). Along such a piece S =
-// p + D has a closed form in one variable (from S' = lag D_a, stop_point_along):
+// The switch on a push piece in closed form where the stop from a reference point of the piece
+// (its end, or its start) is a rise to a_meet = m and the final ramp with the motion going on
+// forwards (frame s = -1, the shape of stop_point_rise), for plan_position's switch search to start
+// from (issue 17: the power law put its first point 5-50 % off on jerk pieces, and every further
+// evaluation of the stop point is a chain of two square roots and two divisions on the plan's
+// critical path). Along such a piece S = p + D has a closed form in one variable (from
+// S' = lag D_a, stop_point_along):
 //  - a hold at a = A > 0: m^2 = (A^2 + 2 J v) / 2 grows linearly with time and
-//    S = K + (m (m + A))^2 / (2 J^2 A). At the root m (m + A) = sqrt(u^2 - 2 J^2 A over) with
-//    u = m (m + A) at the end: a quadratic in m, then v and the time.
+//    S = K + (m (m + A))^2 / (2 J^2 A). At the root m (m + A) = sqrt(u^2 - 2 J^2 A f) with
+//    u = m (m + A) at the reference: a quadratic in m, then v and the time.
 //  - a rise at +J: c = J v - a^2 / 2 stays constant, m = sqrt(a^2 + c), and with
 //    E = (a + m) / sqrt|c| (a = sqrt|c| sinh w for c > 0, cosh w for c < 0; E = e^w),
 //    S = K + |c|^(3/2) / (4 J^2) (E^3 +- 4 E - 1 / E). The root's E solves
 //    E^4 +- 4 E^2 - r E - 1 = 0: Halley steps from an upper bound near the root (below).
-// K is set by the stop point at the end, `over` = S(end) - goal >= 0. Returns the time from the
-// piece's start `s` (length t_piece, jerk g), or NaN where the end has another shape or frame. Only
-// a starting point: the search evaluates S there as from any other; where the shape changes between
-// the root and the end the point is merely off.
-inline double switch_on_rise(const KinematicState& s, double t_piece, double g, double over,
-                             const StopBounds& b) noexcept {
+// K is set by the stop point at the reference, at time t_ref of the piece from its start `s`
+// (jerk g), with f = S(ref) - goal (>= 0 at the end, < 0 at the start); `at_end`: the reference is
+// the piece's end, whose E bounds the root's. Returns the time from the piece's start, or NaN
+// where the reference has another shape or frame. Only a starting point: the search evaluates S
+// there as from any other; where the shape changes between the root and the reference the point
+// is merely off.
+inline double switch_from(const KinematicState& s, double t_ref, double g, double f, bool at_end,
+                          const StopBounds& b) noexcept {
   const double jerk = b.jerk;
-  const double a_e = s.a + g * t_piece;
-  const double v_e = s.v + t_piece * (s.a + (0.5 * g) * t_piece);
-  if (!(natural_velocity(v_e, a_e, jerk) > 0.0)) return NAN;
+  const double a_r = s.a + g * t_ref;
+  const double v_r = s.v + t_ref * (s.a + (0.5 * g) * t_ref);
+  if (!(natural_velocity(v_r, a_r, jerk) > 0.0)) return NAN;
   if (g == jerk) {
-    const double c = jerk * v_e - 0.5 * a_e * a_e;
-    const double m = std::sqrt(a_e * a_e + c);
-    if (!(m <= b.am && a_e + m > 0.0)) return NAN;
+    const double c = jerk * v_r - 0.5 * a_r * a_r;
+    const double m = std::sqrt(a_r * a_r + c);
+    if (!(m <= b.am && a_r + m > 0.0)) return NAN;
     const double pm4 = c > 0.0 ? 4.0 : -4.0;
     const double sc = std::sqrt(std::abs(c));
     const double scale = std::abs(c) * sc * (0.25 * b.inv_jerk * b.inv_jerk);
-    const double e_end = (a_e + m) / sc;
-    const double r = e_end * (e_end * e_end + pm4) - 1.0 / e_end - over / scale;
+    const double e_ref = (a_r + m) / sc;
+    const double r = e_ref * (e_ref * e_ref + pm4) - 1.0 / e_ref - f / scale;
+    // From the start: where m reaches A- (a = sqrt(A-^2 - c)) the stop leaves the shape; a root
+    // beyond that point (S there below the goal) is no start, and one before it lies below its E.
+    double e_cap = e_ref;
+    if (!at_end) {
+      e_cap = (std::sqrt(b.am * b.am - c) + b.am) / sc;
+      if (!(e_cap * (e_cap * e_cap + pm4) - 1.0 / e_cap >= r)) return NAN;
+    }
     // Start at an upper bound near the root, not at the end's E, which can be hundreds of times
     // the root's (from there 86 of the benchmark set's 723 starts took 10 steps or more, 47 of them
     // stopped at the cap short of the root; from the bound 3.2 steps on average, at most 6). For c
@@ -343,10 +372,10 @@ inline double switch_on_rise(const KinematicState& s, double t_piece, double g, 
     // the steps fall monotonically onto it.
     double e = 0.0;
     if (c > 0.0) {
-      e = std::min(e_end, 0.125 * (r + std::sqrt(r * r + 16.0)));
+      e = std::min(e_cap, 0.125 * (r + std::sqrt(r * r + 16.0)));
       if (r >= 0.125) e = std::min(e, cbrt_above(r));
     } else {
-      const double u = std::min(e_end, std::sqrt(4.0 + 0.5 * std::max(r + 1.0, 0.0)));
+      const double u = std::min(e_cap, std::sqrt(4.0 + 0.5 * std::max(r + 1.0, 0.0)));
       const double u3 = r + 4.0 * u + 1.0 / u;
       e = u3 > 0.0 ? std::min(u, cbrt_above(u3)) : u;
     }
@@ -359,30 +388,60 @@ inline double switch_on_rise(const KinematicState& s, double t_piece, double g, 
       e -= step;
       if (!(std::abs(step) > 1e-15 * e)) break;
     }
-    // r keeps about 1e-16 of the terms at the end; that moves the root by its share of
+    // r keeps about 1e-16 of the terms at the reference; that moves the root by its share of
     // h'(E) / E = 3E^3 +- 4E + 1/E (at the root). Where the root's E could be off by more than
     // 1e-8 of itself (a root far below the end of a long piece), the point is no start.
-    const double terms_end = e_end * (e_end * e_end + 4.0) + 1.0 / e_end + over / scale;
-    if (!(e * (3.0 * e * e + pm4) + 1.0 / e >= 1e-8 * terms_end)) return NAN;
+    const double terms_ref = e_ref * (e_ref * e_ref + 4.0) + 1.0 / e_ref + std::abs(f) / scale;
+    if (!(e * (3.0 * e * e + pm4) + 1.0 / e >= 1e-8 * terms_ref)) return NAN;
     const double a_root = 0.5 * sc * (c > 0.0 ? e - 1.0 / e : e + 1.0 / e);
-    return (a_root - s.a) / jerk;
+    // The time is a difference of accelerations: where it keeps less than 1e-8 of them (a root
+    // near the start of a long piece), the point is no start either.
+    const double rise = a_root - s.a;
+    if (!(std::abs(rise) >= 1e-8 * (std::abs(a_root) + std::abs(s.a) + sc))) return NAN;
+    return rise / jerk;
   }
   if (g == 0.0 && s.a > 0.0) {
     const double aa = s.a;
-    const double m = std::sqrt(0.5 * (aa * aa + 2.0 * jerk * v_e));
+    const double m = std::sqrt(0.5 * (aa * aa + 2.0 * jerk * v_r));
     if (!(m <= b.am)) return NAN;
     const double u = m * (m + aa);
-    const double q2 = u * u - 2.0 * (jerk * jerk) * aa * over;
+    const double q2 = u * u - 2.0 * (jerk * jerk) * aa * f;
     // The difference keeps about 1e-16 of u^2: where the root's q^2 is below 1e-8 of it (a root
     // far below the end of a long hold), the point is no start (fuzz: on a hold of 8e16 s the
     // difference of two values near 1.5e35 put the start 2e10 times beyond a switch at 0.074 s,
-    // and the search from there ended 3 times too late).
+    // and the search from there ended 3 times too late). From the start (f < 0) it is a sum.
     if (!(q2 >= 1e-8 * (u * u))) return NAN;
+    // From the start: a root beyond m = A- (where the stop leaves the shape) is no start.
+    const double u_cap = b.am * (b.am + aa);
+    if (!at_end && !(q2 <= u_cap * u_cap)) return NAN;
     const double q = std::sqrt(q2);
     const double m_root = 2.0 * q / (aa + std::sqrt(aa * aa + 4.0 * q));
-    return ((2.0 * m_root * m_root - aa * aa) / (2.0 * jerk) - s.v) / aa;
+    // The time is a difference of velocities, as above.
+    const double v_root = (2.0 * m_root * m_root - aa * aa) / (2.0 * jerk);
+    const double gain = v_root - s.v;
+    if (!(std::abs(gain) >= 1e-8 * (std::abs(v_root) + std::abs(s.v) + aa * aa * b.inv_jerk)))
+      return NAN;
+    return gain / aa;
   }
   return NAN;
+}
+
+// switch_from with the piece's end (length t_piece) as the reference, `over` = S(end) - goal >= 0.
+inline double switch_on_rise(const KinematicState& s, double t_piece, double g, double over,
+                             const StopBounds& b) noexcept {
+  return switch_from(s, t_piece, g, over, true, b);
+}
+
+// The switch search's first point on a piece (length t_piece) where S(start) - goal = f_start < 0
+// and S(end) - goal = f_end >= 0: switch_from with the start as the reference where the stop there
+// has the shape and gives a point inside the piece, else with the end (issue 17: from the end the
+// root's m (m + A) or E is the difference of the end's and the excess, which cancels for a root far
+// from the end, and the end may have left the shape that the start and the root still have).
+inline double switch_in_piece(const KinematicState& s, double t_piece, double g, double f_start,
+                              double f_end, const StopBounds& b) noexcept {
+  const double x = switch_from(s, 0.0, g, f_start, false, b);
+  if (x > 0.0 && x < t_piece) return x;
+  return switch_from(s, t_piece, g, f_end, true, b);
 }
 
 // Whether the shortest stop from (v0, a0) has the shape on which stop_point_along marks S as
