@@ -84,7 +84,7 @@ class ServoPhases : public AxisPart {
     AxisMonitoring(a).check_enables<kAlone>();
     // command_buffer.cpp: a waiting command takes over; a pass left alone stops. Neither without
     // a waiting command or a pass.
-    if (a.buffer_.waiting || a.job_.passing()) {
+    if (a.buffer_waiting_ || a.job_.passing()) {
       a.note_event();
       BufferedCommands(a).run_buffer(port);
     }
