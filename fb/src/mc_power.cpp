@@ -15,15 +15,16 @@ void MC_Power::operator()(plc::AXIS_REF& axis) noexcept {
 
   // Written as a comparison that NaN fails.
   const bool override_valid = Override >= 0.0 && Override <= 100.0;
-  if (override_valid && (!override_written_ || Override != written_override_)) {
-    write_override(axis);
-  }
-
   Status = plc::test_bit(axis.NcToPlc.StateDWord, plc::kStateOperational);
   Error = !override_valid;
   ErrorID = override_valid ? 0 : plc::to_id(plc::ErrorCode::kOverrideNotAllowed);
   Busy = Enable;
   Active = Enable && !Error;
+  // Last, so that its call is the block's last step (a jump): no call of the block saves and
+  // restores registers for it. The outputs above do not depend on it.
+  if (override_valid && (!override_written_ || Override != written_override_)) {
+    write_override(axis);
+  }
 }
 
 // Out of line: the call of lround made every call of the block save and restore registers.

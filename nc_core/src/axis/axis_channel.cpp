@@ -26,14 +26,14 @@ void AxisChannel::take_over(uint16_t number, uint16_t running_job) noexcept {
 
 void AxisChannel::answer_current(plc::CommandState state, uint32_t code) noexcept {
   cmd_state_ = state;
-  changed_ = true;
+  warnings.changed = true;  // changed()
   ref_.Mailbox.set_answer(cmd_no_, state, code);
 }
 
 bool AxisChannel::raise(plc::ErrorCode code) noexcept {
   if (error_ != plc::ErrorCode::kNone) return false;
   error_ = code;
-  changed_ = true;
+  warnings.changed = true;  // changed()
   return true;
 }
 

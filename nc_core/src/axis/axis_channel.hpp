@@ -29,7 +29,8 @@ inline uint8_t warning_bit(Warning w) noexcept {
 // The warnings an axis latches: a bit each; NcToPlc.Warning shows the last one set while it still
 // holds, otherwise the first still latched.
 // `changed` is set by every change that may change code() (clear() only when the bit was set: the
-// override's check clears in every cycle); the channel's publish looks at it.
+// override's check clears in every cycle), and by the channel for its own (AxisChannel::changed()):
+// one flag, so that the steady cycle tests one byte for both.
 class AxisWarnings {
  public:
   void warn(Warning w) noexcept {
@@ -99,7 +100,7 @@ class AxisChannel {
   bool raise(plc::ErrorCode code) noexcept;
   void clear_error() noexcept {
     error_ = plc::ErrorCode::kNone;
-    changed_ = true;
+    warnings.changed = true;  // changed()
   }
 
   // CmdNo, CmdState, ErrorCode, Warning and AxisIndex of NcToPlc.
@@ -115,18 +116,15 @@ class AxisChannel {
     out.AxisIndex = index;
   }
   // Something publish_to() writes may have changed since published() (the error, the command
-  // executed or its state, a warning): a servo axis publishes those five only then.
-  bool changed() const noexcept { return changed_ || warnings.changed; }
-  void published() noexcept {
-    changed_ = false;
-    warnings.changed = false;
-  }
+  // executed or its state, a warning): a servo axis publishes those five only then. The
+  // warnings' flag is the channel's too (AxisWarnings).
+  bool changed() const noexcept { return warnings.changed; }
+  void published() noexcept { warnings.changed = false; }
 
  private:
   uint16_t cmd_no_ = 0;  // the command the axis executes (or executed last)
   plc::CommandState cmd_state_ = plc::CommandState::kFree;
   plc::ErrorCode error_ = plc::ErrorCode::kNone;
-  bool changed_ = true;  // see changed()
 
  public:
   AxisWarnings warnings{};  // a part of its own: every axis part sets and clears them

@@ -17,7 +17,7 @@ void AxisCore::accept(JobKind kind, uint16_t number, const Profile& profile, dou
   homing_.clear();
   // A new job in place of the running one: a command waiting behind that one is dropped (when
   // the waiting command itself starts here, the buffer is already empty).
-  buffer_.drop(channel_, CommandState::kAborted);
+  buffer_.drop(buffer_waiting_, channel_, CommandState::kAborted);
   job_.start(kind, number, profile, target, target_velocity, limits);
   if (kind == JobKind::kHalt || kind == JobKind::kStop) {
     stack_.on_stop();
@@ -56,7 +56,7 @@ void AxisCore::raise_error(ErrorCode code, bool own) noexcept {
   if (channel_.runs(slave_link_.command)) {
     channel_.answer_current(CommandState::kError, plc::to_id(code));
   }
-  buffer_.drop(channel_, CommandState::kError,
+  buffer_.drop(buffer_waiting_, channel_, CommandState::kError,
                plc::to_id(code));  // a waiting command fails with the axis
   // The compensation fails with the axis; external generation is switched off (seed 000 §2.6).
   fold_superpositions(CommandState::kError, code);

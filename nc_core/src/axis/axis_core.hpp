@@ -154,6 +154,7 @@ struct AxisCore {
   bool group_ready_ = false;          // see set_group_ready()
   bool by_hand_ = false;              // case 2 in force (follows_by_hand() latched)
   bool events_ = true;                // an event since image_ was computed (note_event())
+  bool buffer_waiting_ = false;       // a command waits in buffer_ (command_buffer.hpp)
   // C7 / C8 (error_propagation.cpp), the coupling link and the homing: a steady cycle reads only
   // the flag each keeps first, so they follow the members above in the order of their size.
   PropagationDelay propagation_{};
@@ -201,11 +202,13 @@ struct AxisCore {
     monitors_.set_referenced(homed);
   }
 
-  // Each at the start of a cache line: the stack's first 128 bytes and the channel's first 256
-  // (its AXIS_REF's PlcToNc, NcToPlc and the mailbox's count) are what a steady cycle reads.
+  // Each at the start of a cache line: the stack's first 128 bytes, the channel's first 256
+  // (its AXIS_REF's PlcToNc, NcToPlc and the mailbox's count) and the job's first lines (its
+  // kind, online state, table and profile header and the current segment) are what a steady
+  // cycle reads.
   alignas(64) SuperpositionStack stack_{};
   alignas(64) AxisChannel channel_{};
-  MasterJob job_{};
+  alignas(64) MasterJob job_{};
   CommandBuffer buffer_{};
   Profile& scratch_;  // a start is planned here first, so a refusal changes nothing
   AxisConfig config_;

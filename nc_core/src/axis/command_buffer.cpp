@@ -83,9 +83,9 @@ ErrorCode BufferedCommands::buffer_command(const plc::Command& command,
       return code;
     }
   }
-  if (s_.buffer_.waiting) return ErrorCode::kBufferFull;
+  if (s_.buffer_waiting_) return ErrorCode::kBufferFull;
   s_.buffer_.command = command;
-  s_.buffer_.waiting = true;
+  s_.buffer_waiting_ = true;
   s_.channel_.answer(command.number, CommandState::kBuffered);
   if (ready_for_next()) {
     take_next(port);
@@ -116,14 +116,14 @@ bool BufferedCommands::ready_for_next() const noexcept {
 }
 
 void BufferedCommands::run_buffer(CouplingPort& port) noexcept {
-  if (s_.buffer_.waiting && ready_for_next()) take_next(port);
+  if (s_.buffer_waiting_ && ready_for_next()) take_next(port);
   // A pass whose next command was refused when taking over (or dropped) must not run away.
-  if (!s_.buffer_.waiting && s_.job_.passing() && s_.job_.table.generation_ended()) stop_pass();
+  if (!s_.buffer_waiting_ && s_.job_.passing() && s_.job_.table.generation_ended()) stop_pass();
 }
 
 void BufferedCommands::take_next(CouplingPort& port) noexcept {
   plc::Command next = s_.buffer_.command;
-  s_.buffer_.waiting = false;
+  s_.buffer_waiting_ = false;
   next.buffer_mode = plc::MC_Aborting;
   // Relative and modulo targets count from the running positioning's target (where a buffered
   // command starts), not from where the set values are when it takes over.
@@ -204,7 +204,7 @@ double BufferedCommands::next_direction(const plc::Command& next, double from, d
 }
 
 void BufferedCommands::plan_blend(double level) noexcept {
-  if (!s_.buffer_.waiting || !blending_mode(s_.buffer_.command.buffer_mode)) return;
+  if (!s_.buffer_waiting_ || !blending_mode(s_.buffer_.command.buffer_mode)) return;
   if (s_.job_.kind() != JobKind::kPosition || !s_.job_.final_table() ||
       s_.job_.table.generation_ended()) {
     return;

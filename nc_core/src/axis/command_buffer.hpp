@@ -6,7 +6,9 @@
 // command, a stop or an axis error drops the waiting one.
 //
 // The waiting command plus pure helpers; when it takes over is BufferedCommands'
-// (buffered_commands.hpp). Cycle functions only: noexcept, no allocation.
+// (buffered_commands.hpp). Whether one waits is AxisCore::buffer_waiting_, among the hot members
+// (the steady cycle reads only that; docs/performance.md "Eighth pass"). Cycle functions only:
+// noexcept, no allocation.
 #pragma once
 
 #include <cstdint>
@@ -17,12 +19,12 @@
 namespace nc::detail {
 
 struct CommandBuffer {
-  bool waiting = false;  // first: the axis's steady cycle reads only this
-  plc::Command command{};
+  plc::Command command{};  // valid while the axis's flag `waiting` is set
 
-  // The waiting command, if any, is answered `state` on `channel` (an aborting command, a stop,
-  // an error) and leaves the buffer.
-  void drop(AxisChannel& channel, plc::CommandState state, uint32_t code = 0) noexcept {
+  // The waiting command, if any (`waiting`), is answered `state` on `channel` (an aborting
+  // command, a stop, an error) and leaves the buffer.
+  void drop(bool& waiting, AxisChannel& channel, plc::CommandState state,
+            uint32_t code = 0) const noexcept {
     if (!waiting) return;
     waiting = false;
     channel.answer(command.number, state, code);

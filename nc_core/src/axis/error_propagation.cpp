@@ -48,7 +48,7 @@ bool GroupErrors::update_by_hand() noexcept {
       s_.channel_.answer_current(CommandState::kAborted);
     }
     s_.job_.clear();
-    s_.buffer_.drop(s_.channel_, CommandState::kAborted);
+    s_.buffer_.drop(s_.buffer_waiting_, s_.channel_, CommandState::kAborted);
   }
   return true;
 }

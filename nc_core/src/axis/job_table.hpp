@@ -133,10 +133,18 @@ class JobTable {
   double offset_ = 0.0;  // s; see set_time_offset()
   bool ended_ = false;
   bool reached_ = false;
+  // chain_ has levels (chain_.count != 0): a sample reads this, in the header's line, instead of
+  // the count behind the profile (one cache line fewer per cycle).
+  bool chained_ = false;
   double jerk_ = 0.0;
   KinematicState state_{};
   Profile profile_{};        // a cycle reads its header (first) and one segment, not all of it
   DecouplingChain chain_{};  // empty except after an online decoupling, until the next install
+
+  // s through the chain (without levels s itself, as the chain's loop gives it; so the jerk too).
+  KinematicState through_chain(const KinematicState& s) const noexcept {
+    return chained_ ? chain_.state(s) : s;
+  }
 };
 
 // Inline: the set-value phase of every moving axis calls it in every cycle.
@@ -146,7 +154,7 @@ inline KinematicState JobTable::advance(JobKind kind, bool final, double cycle_t
   };
   if (ended_ && !passing()) {
     jerk_ = 0.0;
-    state_ = chain_.state(profile_.final_state());
+    state_ = through_chain(profile_.final_state());
     return state_;
   }
   ++k_;
@@ -159,8 +167,8 @@ inline KinematicState JobTable::advance(JobKind kind, bool final, double cycle_t
     if (at_end) reached_ = profile_.final_state().v != 0.0;
     double jerk = 0.0;
     const KinematicState sample = profile_.at(t, jerk);
-    jerk_ = at_end ? 0.0 : chain_.velocity(jerk);
-    state_ = chain_.state(sample);
+    jerk_ = at_end ? 0.0 : (chained_ ? chain_.velocity(jerk) : jerk);
+    state_ = through_chain(sample);
     return state_;
   }
   if (at_end) {
@@ -168,14 +176,14 @@ inline KinematicState JobTable::advance(JobKind kind, bool final, double cycle_t
     ended_ = final;
     jerk_ = 0.0;
     // A pass goes on at its velocity.
-    state_ = chain_.state(passing() ? profile_.at(t) : profile_.final_state());
+    state_ = through_chain(passing() ? profile_.at(t) : profile_.final_state());
     return state_;
   }
   double jerk = 0.0;
   // One search for p, v, a and j, inline (Profile::at(t, jerk)).
   const KinematicState sample = ProfileSample::at(profile_, t, jerk);
-  jerk_ = chain_.velocity(jerk);
-  state_ = chain_.state(sample);
+  jerk_ = chained_ ? chain_.velocity(jerk) : jerk;
+  state_ = through_chain(sample);
   return state_;
 }
 

@@ -165,6 +165,7 @@ void JobOnline::follow(const DecouplingChain& chain, uint32_t override_value) no
 void JobTable::install(const Profile& profile) noexcept {
   profile_ = profile;
   chain_.count = 0;
+  chained_ = false;
   k_ = 0;
   offset_ = 0.0;
   ended_ = false;
@@ -188,6 +189,7 @@ void JobTable::follow(const DecouplingChain& chain) noexcept {
   for (std::size_t i = 0; i < chain.count; ++i)
     (void)joined.push(chain.levels[i].factor, chain.levels[i].offset);
   chain_ = joined;
+  chained_ = chain_.count != 0;
 }
 
 bool MasterJob::in_brake_phase(double cycle_time) const noexcept {

@@ -83,9 +83,12 @@ class MasterJob {
   double brake_start_ = 0.0;
 
  public:
-  JobGoal goal{};
+  // The online state and the table's header follow the kind, the goal (which a steady cycle does
+  // not read) comes last: what a cycle reads is one run of lines from the job's start
+  // (docs/performance.md "Eighth pass").
   JobOnline online{};
-  JobTable table{};  // last: its profile is the largest member
+  JobTable table{};
+  JobGoal goal{};
 };
 
 // The limits a new job or the error ramp runs with from the set state `from` (fuzz findings K4,

@@ -23,11 +23,10 @@ void Monitors::configure(const AxisConfig& config, double cycle_time) noexcept {
   tw_cycles_ = std::max<uint64_t>(
       1, static_cast<uint64_t>(std::ceil(config.target_window_time / cycle_time - kCycleSlack)));
   tw_count_ = 0;
-  in_target_ = false;
+  window_bits_ = 0;
 
   pr_enabled_ = config.position_range_enabled;
   pr_window_ = config.position_range_window;
-  in_area_ = false;
 
   min_enabled_ = config.sw_limit_min_enabled;
   max_enabled_ = config.sw_limit_max_enabled;

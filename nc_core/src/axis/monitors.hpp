@@ -19,6 +19,7 @@
 #include <limits>
 
 #include "nc_core/axis_config.hpp"
+#include "plc_interface/axis_ref.hpp"
 
 namespace nc::detail {
 
@@ -34,8 +35,11 @@ class Monitors {
   // has ended; false resets the target-window timer.
   void windows(double actual, double target, bool settled) noexcept;
   void reset_windows() noexcept;
-  bool in_target_position() const noexcept { return in_target_; }
-  bool in_position_area() const noexcept { return in_area_; }
+  bool in_target_position() const noexcept { return (window_bits_ & kInTarget) != 0; }
+  bool in_position_area() const noexcept { return (window_bits_ & kInArea) != 0; }
+  // The two as StateDWord has them (InPositionArea, InTargetPosition; the other bits 0): the
+  // steady cycle's publish ors them in at once.
+  uint32_t window_state_bits() const noexcept { return window_bits_; }
 
   // Software limits on a position (true: beyond an enabled limit). They count only while the
   // axis is referenced (homed): an axis that has not homed does not know where its limits are.
@@ -52,11 +56,13 @@ class Monitors {
 
  private:
   // The flags together: an axis's hot members are packed (docs/performance.md "Kernel cycle").
+  static constexpr uint8_t kInArea = 1U << plc::kStateInPositionArea;
+  static constexpr uint8_t kInTarget = 1U << plc::kStateInTargetPosition;
+
   bool fe_enabled_ = true;
   bool tw_enabled_ = true;
-  bool in_target_ = false;
   bool pr_enabled_ = true;
-  bool in_area_ = false;
+  uint8_t window_bits_ = 0;  // kInArea, kInTarget
   bool referenced_ = true;
   bool min_enabled_ = false;
   bool max_enabled_ = false;
@@ -99,23 +105,22 @@ inline void Monitors::windows(double actual, double target, bool settled) noexce
     return;
   }
   const double distance = std::abs(actual - target);
-  in_area_ = !pr_enabled_ || distance <= pr_window_;
-  if (!tw_enabled_) {
-    in_target_ = true;
-    return;
+  const bool in_area = !pr_enabled_ || distance <= pr_window_;
+  bool in_target = true;
+  if (tw_enabled_) {
+    if (distance <= tw_window_) {
+      if (tw_count_ < tw_cycles_) ++tw_count_;
+    } else {
+      tw_count_ = 0;
+    }
+    in_target = tw_count_ >= tw_cycles_;
   }
-  if (distance <= tw_window_) {
-    if (tw_count_ < tw_cycles_) ++tw_count_;
-  } else {
-    tw_count_ = 0;
-  }
-  in_target_ = tw_count_ >= tw_cycles_;
+  window_bits_ = static_cast<uint8_t>((in_area ? kInArea : 0U) | (in_target ? kInTarget : 0U));
 }
 
 inline void Monitors::reset_windows() noexcept {
   tw_count_ = 0;
-  in_target_ = false;
-  in_area_ = false;
+  window_bits_ = 0;
 }
 
 }  // namespace nc::detail

@@ -84,7 +84,7 @@ class ServoPhases : public AxisPart {
     AxisMonitoring(a).check_enables<kAlone>();
     // command_buffer.cpp: a waiting command takes over; a pass left alone stops. Neither without
     // a waiting command or a pass.
-    if (a.buffer_.waiting || a.job_.passing()) {
+    if (a.buffer_waiting_ || a.job_.passing()) {
       a.note_event();
       BufferedCommands(a).run_buffer(port);
     }
@@ -187,10 +187,8 @@ class ServoPhases : public AxisPart {
          ((a.set_.v != 0.0) & (std::abs(a.set_.a) <= a.image_.constant_acceleration) &
           (a.set_jerk_ == 0.0)));
 
-    uint32_t word = a.image_.state_bits;
+    uint32_t word = a.image_.state_bits | a.monitors_.window_state_bits();
     set_state_bit(word, plc::kStateNotMoving, std::abs(a.drive_.velocity()) < a.standstill_window_);
-    set_state_bit(word, plc::kStateInPositionArea, a.monitors_.in_position_area());
-    set_state_bit(word, plc::kStateInTargetPosition, a.monitors_.in_target_position());
     set_state_bit(word, plc::kStatePositiveDirection, a.set_.v > 0.0);
     set_state_bit(word, plc::kStateNegativeDirection, a.set_.v < 0.0);
     set_state_bit(word, plc::kStateConstantVelocity, constant_velocity);

@@ -95,8 +95,8 @@ class ServoAxis : private AxisCore {
 // Asks for the lines a steady cycle of `axis` reads (axis_core.hpp) and its snapshot's group
 // reaction, so that the kernel fetches the next axes' data while it runs this one: the hot
 // members up to the C7 delay's flag, the stack's first line, the channel's first four, the job's
-// kind, and its override with the table and the profile's header and first segments, and the
-// buffer's flag (what a quiet cycle reads, docs/performance.md "Seventh pass"; not the homing,
+// first five (its kind and override, the table and the profile's header and first segments)
+// (what a quiet cycle reads, docs/performance.md "Seventh pass", "Eighth pass"; not the homing,
 // the C8 filter or the slave link, which only a cycle in a rare state reads).
 [[gnu::always_inline]] inline void prefetch_cycle_data(const ServoAxis& axis,
                                                        const AxisSnapshot& snapshot) noexcept {
@@ -106,9 +106,7 @@ class ServoAxis : private AxisCore {
   prefetch_lines(&a, hot + 1);
   prefetch_lines(&a.stack_, 1);
   prefetch_lines(&a.channel_, 256);
-  prefetch_lines(&a.job_, 1);
-  prefetch_lines(&a.job_.online, 256);
-  prefetch_lines(&a.buffer_.waiting, 1);
+  prefetch_lines(&a.job_, 320);
   prefetch_lines(&snapshot.group_reaction_due, 1);  // the steady cycle writes only this
 }
 
