@@ -10,10 +10,9 @@
 //     every h where stop_has_hold_shape holds, to 1e-10 of the terms it is made of; at points where
 //     the stop has left that shape, stop_has_hold_shape says so;
 //   - switch_on_rise (the switch search's first point): on a hold or a rise at +J from the draw
-//   over
-//     a random time, with the stop a rise and the final ramp going forwards at a random point and
-//     at the end, it finds that point from the stop point's excess at the end, to 1e-9 of the time
-//     (or, where S barely moves over the piece, to 1e-13 of S);
+//     over a random time, with the stop a rise and the final ramp going forwards at a random point
+//     and at the end, it finds that point from the stop point's excess at the end, to 1e-9 of the
+//     time (or, where S barely moves over the piece, to 1e-13 of S);
 //   - switch_from the piece's start: the same from the stop point's shortfall at the start, with
 //     the stop a rise and the ramp at the start and at the point (the end may have left the shape);
 //     where the stop at the point has left it, no start.
@@ -57,6 +56,42 @@ void for_each_draw(std::uint64_t seed, Visit&& visit) {
     const Draw d = draw(rng);
     visit(d, d.stop_bounds(), rng);
   }
+}
+
+// A push piece for the switch tests: the draw's push at +J (a hold where the draw's push is 0 and
+// a > 0; false for the others), its length a random share of the stop's time scale, and a random
+// point on it.
+struct Piece {
+  double g = 0.0;
+  double length = 0.0;
+  double tau = 0.0;
+};
+bool draw_piece(const Draw& d, profile_problems::Rng& rng, Piece& piece) {
+  piece.g = d.g == 0.0 ? 0.0 : d.limits.jerk;
+  if (piece.g == 0.0 && !(d.a > 0.0)) return false;
+  const double span =
+      std::max(d.limits.deceleration / d.limits.jerk, std::abs(d.v) / d.limits.deceleration);
+  piece.length = span * rng.log_uniform(1e-6, 1.0);
+  piece.tau = piece.length * rng.uniform(0.0, 1.0);
+  return true;
+}
+
+// The state at t along a piece of jerk g from the draw's state (p relative to the piece's start).
+struct Along {
+  double p;
+  double v;
+  double a;
+};
+Along along_piece(const Draw& d, double g, double t) {
+  return {t * (d.v + t * (0.5 * d.a + t * g / 6.0)), d.v + t * (d.a + 0.5 * g * t), d.a + g * t};
+}
+
+// Whether the stop from `s` is a rise and the final ramp with the motion going on forwards (its
+// point into `rise`).
+bool rises_forwards(const Along& s, double jerk, double g, const nc::detail::StopBounds& b,
+                    nc::detail::StopAlong& rise) {
+  return nc::detail::natural_velocity(s.v, s.a, jerk) > 0.0 &&
+         nc::detail::stop_point_rise(s.v, s.a, g, b, rise);
 }
 
 }  // namespace
@@ -149,22 +184,15 @@ TEST_CASE("switch_on_rise: the switch on a hold or a rise where the stop is a ri
   long found = 0, missed = 0, off = 0;
   for_each_draw(
       0x5EED5Eull, [&](const Draw& d, const nc::detail::StopBounds& b, profile_problems::Rng& rng) {
-        const double g = d.g == 0.0 ? 0.0 : d.limits.jerk;
-        if (g == 0.0 && !(d.a > 0.0)) return;
-        const double span =
-            std::max(d.limits.deceleration / d.limits.jerk, std::abs(d.v) / d.limits.deceleration);
-        const double t_piece = span * rng.log_uniform(1e-6, 1.0);
-        const double tau = t_piece * rng.uniform(0.0, 1.0);
+        Piece piece;
+        if (!draw_piece(d, rng, piece)) return;
+        const double g = piece.g, t_piece = piece.length, tau = piece.tau;
         // S (relative to the piece's start) where the stop is a rise and the ramp, going forwards.
         auto stop_point = [&](double t, double& out) {
-          const double a_t = d.a + g * t;
-          const double v_t = d.v + t * (d.a + 0.5 * g * t);
+          const Along s = along_piece(d, g, t);
           nc::detail::StopAlong along{0.0, 0.0, 0.0};
-          if (!(nc::detail::natural_velocity(v_t, a_t, d.limits.jerk) > 0.0) ||
-              !nc::detail::stop_point_rise(v_t, a_t, g, b, along)) {
-            return false;
-          }
-          out = t * (d.v + t * (0.5 * d.a + t * g / 6.0)) + along.distance;
+          if (!rises_forwards(s, d.limits.jerk, g, b, along)) return false;
+          out = s.p + along.distance;
           return true;
         };
         double s_root = 0.0, s_end = 0.0;
@@ -193,22 +221,16 @@ TEST_CASE("switch_from the piece's start: the switch where the start and the roo
   long found = 0, missed = 0, off = 0, beyond = 0, beyond_taken = 0;
   for_each_draw(0x57A27ull, [&](const Draw& d, const nc::detail::StopBounds& b,
                                 profile_problems::Rng& rng) {
-    const double g = d.g == 0.0 ? 0.0 : d.limits.jerk;
-    if (g == 0.0 && !(d.a > 0.0)) return;
-    const double span =
-        std::max(d.limits.deceleration / d.limits.jerk, std::abs(d.v) / d.limits.deceleration);
-    const double t_piece = span * rng.log_uniform(1e-6, 1.0);
-    const double tau = t_piece * rng.uniform(0.0, 1.0);
+    Piece piece;
+    if (!draw_piece(d, rng, piece)) return;
+    const double g = piece.g, t_piece = piece.length, tau = piece.tau;
     // S (relative to the piece's start), and whether the stop there is a rise and the ramp
     // going forwards.
     auto stop_point = [&](double t, double& out) {
-      const double a_t = d.a + g * t;
-      const double v_t = d.v + t * (d.a + 0.5 * g * t);
-      const double p_t = t * (d.v + t * (0.5 * d.a + t * g / 6.0));
+      const Along s = along_piece(d, g, t);
       nc::detail::StopAlong rise{0.0, 0.0, 0.0};
-      const bool shape = nc::detail::natural_velocity(v_t, a_t, d.limits.jerk) > 0.0 &&
-                         nc::detail::stop_point_rise(v_t, a_t, g, b, rise);
-      out = p_t + nc::detail::stop_point_along(v_t, a_t, g, b).distance;
+      const bool shape = rises_forwards(s, d.limits.jerk, g, b, rise);
+      out = s.p + nc::detail::stop_point_along(s.v, s.a, g, b).distance;
       return shape;
     };
     double s_start = 0.0, s_root = 0.0;
