@@ -21,7 +21,9 @@
 //    master's SetAcc|) (the rate nearest the AccBound interval, clamped at the commanded factor);
 //    both plus what its own compensation may add, as on a linear slave;
 //  - a coupled slave shows a GearRatio != 0, except one that left its coupling on its own error
-//    under DELAYED propagation (C7): it shows as a slave with GearRatio 0 until MC_GearOut;
+//    under DELAYED propagation (C7): it shows as a slave with GearRatio 0 until MC_GearOut; and a
+//    cyclic slave after its coupling's first cycle: its factor in force may pass 0 on its way to a
+//    commanded factor of the other sign (C6; K27);
 //  - an HLI target (docs/behaviour.md "HLI axis coupling", D3: its own dynamic limits are not
 //    monitored): while a list is in force, |SetVelo| and |SetAcc| stay within the list's
 //    Σ |K| × each source's program limits (what the PLC passes to hli()); once the list is off
@@ -237,6 +239,9 @@ class AxisWatch {
         return "set acceleration above limit";
       }
     }
+    // A coupling the PLC no longer knows (master_ nullptr: MC_GearInDyn's command ended with an
+    // error of the axis, the coupling stays until MC_GearOut) keeps the kind last known.
+    cyclic_coupling_ = coupled && (cyclic || (cyclic_coupling_ && master_ == nullptr));
     const bool resting = n.SetVelo == 0.0 && n.SetAcc == 0.0 &&
                          !plc::test_bit(n.StateDWord, plc::kStateHasJob) &&
                          !plc::test_bit(n.StateDWord, plc::kStateCompensating) &&
@@ -297,7 +302,7 @@ class AxisWatch {
   // own limits: documented), only so that |a| stays within the held factor × the master's.
   FUZZ_CHECKER const char* check_cyclic(const plc::NCTOPLC_AXIS_REF& n, bool moved,
                                         double held_ratio) const noexcept {
-    if (n.GearRatio == 0.0 && !left_coupling(n)) return "a coupled slave shows no gear ratio";
+    if (n.GearRatio == 0.0 && !zero_ratio_allowed(n)) return "a coupled slave shows no gear ratio";
     if (!plc::test_bit(n.StateDWord, plc::kStateOperational) ||
         !plc::test_bit(master_->StateDWord, plc::kStateOperational)) {
       return nullptr;
@@ -326,7 +331,7 @@ class AxisWatch {
     return comp_acceleration_ + comp_share_ * std::fabs(basic);
   }
   const char* check_following(const plc::NCTOPLC_AXIS_REF& n) const noexcept {
-    if (n.GearRatio == 0.0 && !left_coupling(n)) return "a coupled slave shows no gear ratio";
+    if (n.GearRatio == 0.0 && !zero_ratio_allowed(n)) return "a coupled slave shows no gear ratio";
     // Not checked while either axis is not operational: a master without its controller enable
     // publishes set values that follow its actual position after its slaves sampled it, and the
     // reaction of the slaves to that is SPEC C7, not built yet (docs/behaviour.md).
@@ -347,12 +352,20 @@ class AxisWatch {
     return nullptr;
   }
 
-  // SPEC C7 DELAYED (docs/behaviour.md "Error propagation"): a slave whose own error is raised
-  // leaves its master's coupling (no factor in force: GearRatio 0) but still shows as a slave
-  // until MC_GearOut, also after MC_Reset. Known from bit 6 (kStateErrorPropagationDelayed),
-  // which shows only on such a faulty axis, from its error's cycle on; kept while it shows as a
-  // slave (see check()).
-  bool left_coupling(const plc::NCTOPLC_AXIS_REF&) const noexcept { return left_; }
+  // A coupled slave whose GearRatio may be 0 (check_following, check_cyclic):
+  //  - SPEC C7 DELAYED (docs/behaviour.md "Error propagation"): a slave whose own error is raised
+  //    leaves its master's coupling (no factor in force: GearRatio 0) but still shows as a slave
+  //    until MC_GearOut, also after MC_Reset. Known from bit 6 (kStateErrorPropagationDelayed),
+  //    which shows only on such a faulty axis, from its error's cycle on; kept while it shows as
+  //    a slave (see check());
+  //  - SPEC C6 (docs/behaviour.md "Cyclic slave"): the factor in force lies between its former
+  //    value and the commanded ones, so on its way to a commanded factor of the other sign it may
+  //    pass 0, and stop on it where AccBound leaves no other rate (finding K27: a master's
+  //    followed velocity 0 with an acceleration not 0 allows only f' × am = 0). Only after the
+  //    coupling's first cycle, which shows the factor the coupling gave (0 is refused).
+  bool zero_ratio_allowed(const plc::NCTOPLC_AXIS_REF&) const noexcept {
+    return left_ || cyclic_coupling_;
+  }
   static bool usable(double x) noexcept { return std::isfinite(x) && x > 0.0; }
   // The velocity bound of an axis that is not coupled. A compensation's AK± is a step of the set
   // acceleration, not a ramp; an error ramp (or stop) that starts from the compensated set state
@@ -458,7 +471,10 @@ class AxisWatch {
   uint16_t cyclic_number_ = 0;
   double acc_bound_ = 0.0;
   double last_ratio_ = 0.0;
-  bool left_ = false;  // a slave that left its coupling (left_coupling())
+  // The coupling in force was known to be a cyclic one in an earlier cycle, and the axis has
+  // shown as a slave since (zero_ratio_allowed()).
+  bool cyclic_coupling_ = false;
+  bool left_ = false;  // a slave that left its coupling (zero_ratio_allowed())
   // HLI target (hli()).
   bool hli_target_ = false;
   bool was_hli_target_ = false;
