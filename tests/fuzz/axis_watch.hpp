@@ -333,8 +333,8 @@ class AxisWatch {
   const char* check_following(const plc::NCTOPLC_AXIS_REF& n) const noexcept {
     if (n.GearRatio == 0.0 && !zero_ratio_allowed(n)) return "a coupled slave shows no gear ratio";
     // Not checked while either axis is not operational: a master without its controller enable
-    // publishes set values that follow its actual position after its slaves sampled it, and the
-    // reaction of the slaves to that is SPEC C7, not built yet (docs/behaviour.md).
+    // publishes set values that follow its actual position after its slaves sampled it, and its
+    // slaves follow that down in one cycle (docs/reliability.md "K26", open).
     if (master_ == nullptr || !plc::test_bit(n.StateDWord, plc::kStateOperational) ||
         !plc::test_bit(master_->StateDWord, plc::kStateOperational)) {
       return nullptr;
