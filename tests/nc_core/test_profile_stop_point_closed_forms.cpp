@@ -76,6 +76,29 @@ bool draw_piece(const Draw& d, profile_problems::Rng& rng, Piece& piece) {
   return true;
 }
 
+// The switch tests' tally of the points a closed form gives for a piece's root: missed (none in
+// the piece), found, and off (neither within 1e-9 of the piece's time of the root, nor, where S
+// barely moves over the piece and the time is only known to S's rounding, a point whose S is the
+// root's to 1e-13 of `s_scale`). `stop_point(t, out)` gives S at t and whether it has the shape.
+struct SwitchTally {
+  long found = 0;
+  long missed = 0;
+  long off = 0;
+  template <class StopPoint>
+  void judge(double x, const Piece& piece, double s_root, double s_scale, StopPoint&& stop_point) {
+    if (!(x > 0.0 && x < piece.length)) {
+      ++missed;
+      return;
+    }
+    ++found;
+    double s_x = 0.0;
+    if (!(std::abs(x - piece.tau) <= 1e-9 * piece.length) &&
+        !(stop_point(x, s_x) && std::abs(s_x - s_root) <= 1e-13 * s_scale)) {
+      ++off;
+    }
+  }
+};
+
 // The state at t along a piece of jerk g from the draw's state (p relative to the piece's start).
 struct Along {
   double p;
@@ -181,7 +204,7 @@ TEST_CASE("stop_point_along: on the rise-hold-ramp stop S is the quartic of its 
 
 TEST_CASE("switch_on_rise: the switch on a hold or a rise where the stop is a rise and the ramp",
           "[profile][stop_point]") {
-  long found = 0, missed = 0, off = 0;
+  SwitchTally tally;
   for_each_draw(
       0x5EED5Eull, [&](const Draw& d, const nc::detail::StopBounds& b, profile_problems::Rng& rng) {
         Piece piece;
@@ -198,27 +221,17 @@ TEST_CASE("switch_on_rise: the switch on a hold or a rise where the stop is a ri
         double s_root = 0.0, s_end = 0.0;
         if (!stop_point(tau, s_root) || !stop_point(t_piece, s_end) || !(s_end >= s_root)) return;
         const double x = nc::detail::switch_on_rise({0.0, d.v, d.a}, t_piece, g, s_end - s_root, b);
-        if (!(x > 0.0 && x < t_piece)) {
-          ++missed;
-          return;
-        }
-        ++found;
-        // Where S barely moves over the piece (a piece of a few ns) the time is only known to
-        // S's rounding: there S at the point must be the root's to that rounding.
-        double s_x = 0.0;
-        if (!(std::abs(x - tau) <= 1e-9 * t_piece) &&
-            !(stop_point(x, s_x) && std::abs(s_x - s_root) <= 1e-13 * std::abs(s_end))) {
-          ++off;
-        }
+        tally.judge(x, piece, s_root, std::abs(s_end), stop_point);
       });
-  CHECK(found > 20'000);
-  CHECK(missed < found / 100);
-  CHECK(off == 0);
+  CHECK(tally.found > 20'000);
+  CHECK(tally.missed < tally.found / 100);
+  CHECK(tally.off == 0);
 }
 
 TEST_CASE("switch_from the piece's start: the switch where the start and the root have the shape",
           "[profile][stop_point]") {
-  long found = 0, missed = 0, off = 0, beyond = 0, beyond_taken = 0;
+  SwitchTally tally;
+  long beyond = 0, beyond_taken = 0;
   for_each_draw(0x57A27ull, [&](const Draw& d, const nc::detail::StopBounds& b,
                                 profile_problems::Rng& rng) {
     Piece piece;
@@ -245,21 +258,11 @@ TEST_CASE("switch_from the piece's start: the switch where the start and the roo
       if (x == x && !(std::abs(x - tau) <= 1e-6 * t_piece)) ++beyond_taken;
       return;
     }
-    if (!(x > 0.0 && x < t_piece)) {
-      ++missed;
-      return;
-    }
-    ++found;
-    double s_x = 0.0;
-    if (!(std::abs(x - tau) <= 1e-9 * t_piece) &&
-        !(stop_point(x, s_x) &&
-          std::abs(s_x - s_root) <= 1e-13 * (std::abs(s_start) + std::abs(s_root)))) {
-      ++off;
-    }
+    tally.judge(x, piece, s_root, std::abs(s_start) + std::abs(s_root), stop_point);
   });
-  CHECK(found > 20'000);
-  CHECK(missed < found / 100);
-  CHECK(off == 0);
+  CHECK(tally.found > 20'000);
+  CHECK(tally.missed < tally.found / 100);
+  CHECK(tally.off == 0);
   CHECK(beyond > 1'000);
   CHECK(beyond_taken == 0);
 }
