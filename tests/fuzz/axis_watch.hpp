@@ -21,7 +21,8 @@
 //    master's SetAcc|) (the rate nearest the AccBound interval, clamped at the commanded factor);
 //    both plus what its own compensation may add, as on a linear slave;
 //  - a coupled slave shows a GearRatio != 0, except one that left its coupling on its own error
-//    under DELAYED propagation (C7): it shows as a slave with GearRatio 0 until MC_GearOut; and a
+//    under DELAYED propagation (C7) or because its master's drive went off under it (K26): it
+//    shows as a slave with GearRatio 0 until MC_GearOut; and a
 //    cyclic slave after its coupling's first cycle: its factor in force may pass 0 on its way to a
 //    commanded factor of the other sign (C6; K27);
 //  - an HLI target (docs/behaviour.md "HLI axis coupling", D3: its own dynamic limits are not
@@ -37,7 +38,7 @@
 //    HLI target's hli() bound), while the controller enable is on in both cycles; not on a gear
 //    slave (coupled, decoupled in motion, or in the cycle it couples or leaves), nor after fed
 //    external set values (B8: a packet may step) or, on an HLI target, a source that may step
-//    (fed, or without its controller enable: K26) until the axis rests;
+//    (fed) until the axis rests;
 //  - every command number posted is answered (leaves kPosted) within 2 NC cycles, its answer
 //    slot is never lost, the states only move forward (posted → active → reached → an outcome),
 //    and an outcome, once given, never changes.
@@ -153,15 +154,19 @@ class AxisWatch {
   // HLI programs, set before every check(): `target` while the axis has an HLI list in force;
   // `velocity` and `acceleration` bound its drive's set values by the lists of this cycle and the
   // last (Σ |K| × the sources' program limits), +inf where the PLC cannot bound them (a gear
-  // slave among the axes); `steps` when a source may step (may_step(), or without its
-  // controller enable), so the drive may too. These stay until the axis rests (a drive braking
-  // after its list went off starts from at most that velocity).
+  // slave among the axes); `steps` when a source may step (may_step()), so the drive may too. These
+  // stay until the axis rests (a drive braking after its list went off starts from at most that
+  // velocity).
   void hli(bool target, double velocity, double acceleration, bool steps) noexcept {
     hli_target_ = target;
     hli_velocity_ = std::max(hli_velocity_, velocity);
     hli_acceleration_ = std::max(hli_acceleration_, acceleration);
     hli_steps_ = hli_steps_ || steps;
   }
+  // Some axis's drive went off in this cycle under moving set values: a slave may leave its
+  // coupling (K26: it shows GearRatio 0 from then on, as one that left under DELAYED
+  // propagation). Set before check(), for that cycle only.
+  void leader_drive_went_off() noexcept { leader_drive_off_ = true; }
   // External set values were fed since the axis last rested: its set velocity may step.
   bool may_step() const noexcept { return fed_; }
 
@@ -194,7 +199,9 @@ class AxisWatch {
     if (was_coupled_ && !coupled && !was_hli_target_) decoupled_ = true;
     was_coupled_ = coupled;
     was_hli_target_ = hli_target_;
-    left_ = coupled && (left_ || plc::test_bit(n.StateDWord, plc::kStateErrorPropagationDelayed));
+    left_ = coupled && (left_ || plc::test_bit(n.StateDWord, plc::kStateErrorPropagationDelayed) ||
+                        (leader_drive_off_ && n.GearRatio == 0.0));
+    leader_drive_off_ = false;
     const bool homing = plc::test_bit(n.StateDWord, plc::kStateHomingBusy);
     // An HLI target's image shows its drive, not the homing's program motion (docs/behaviour.md
     // "HLI axis coupling": SetVelo shows d); since it last rested its drive values are bounded
@@ -333,8 +340,8 @@ class AxisWatch {
   const char* check_following(const plc::NCTOPLC_AXIS_REF& n) const noexcept {
     if (n.GearRatio == 0.0 && !zero_ratio_allowed(n)) return "a coupled slave shows no gear ratio";
     // Not checked while either axis is not operational: a master without its controller enable
-    // publishes set values that follow its actual position after its slaves sampled it, and its
-    // slaves follow that down in one cycle (docs/reliability.md "K26", open).
+    // publishes set values that follow its actual position (a slave in motion has left it then,
+    // K26), and a slave in error may have left it too.
     if (master_ == nullptr || !plc::test_bit(n.StateDWord, plc::kStateOperational) ||
         !plc::test_bit(master_->StateDWord, plc::kStateOperational)) {
       return nullptr;
@@ -474,7 +481,8 @@ class AxisWatch {
   // The coupling in force was known to be a cyclic one in an earlier cycle, and the axis has
   // shown as a slave since (zero_ratio_allowed()).
   bool cyclic_coupling_ = false;
-  bool left_ = false;  // a slave that left its coupling (zero_ratio_allowed())
+  bool left_ = false;              // a slave that left its coupling (zero_ratio_allowed())
+  bool leader_drive_off_ = false;  // leader_drive_went_off() in this cycle
   // HLI target (hli()).
   bool hli_target_ = false;
   bool was_hli_target_ = false;

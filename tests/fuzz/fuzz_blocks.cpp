@@ -499,6 +499,7 @@ struct Program {
   std::vector<std::string> names;
   std::vector<const plc::NCTOIO_DRIVE_TWO_SPEED*> two_speed_images;
   int cycles = 0;
+  bool drive_went_off = false;  // some axis's drive went off in this cycle under moving set values
   bool coupling = false;
   bool features = false;
   bool hli = false;
@@ -532,6 +533,15 @@ struct Program {
         }
         watches[i].posted(*axes[i]);
       }
+      // An axis whose drive goes off in this cycle while its set values move (the image still
+      // shows the last cycle's): its slaves leave their coupling (K26, docs/behaviour.md "A
+      // master whose drive goes off under its slaves").
+      drive_went_off = false;
+      for (const plc::AXIS_REF* axis : axes) {
+        drive_went_off =
+            drive_went_off || (!plc::test_bit(axis->PlcToNc.ControlDWord, plc::kControlEnable) &&
+                               (axis->NcToPlc.SetVelo != 0.0 || axis->NcToPlc.SetAcc != 0.0));
+      }
       kernel.cycle();
       if (region.allocations() != 0) fuzz::fail("allocation in the PLC calls or the NC cycle");
     }
@@ -546,6 +556,7 @@ struct Program {
                          axes[i]->NcToPlc.CmdNo == a.gear_in.command_number() &&
                          !programs[a.edge_master].hli_written && !a.hli_written;
       watches[i].follow(known ? &axes[a.edge_master]->NcToPlc : nullptr);
+      if (drive_went_off) watches[i].leader_drive_went_off();
       if (hli) check_hli(i);
       if (features && a.gear_dyn.Busy && axes[i]->NcToPlc.CmdNo == a.gear_dyn.command_number() &&
           !programs[a.dyn_edge_master].hli_written && !a.hli_written) {
@@ -653,8 +664,8 @@ struct Program {
     hli_last[i] = state.desc;
   }
   // `steps`: set when a source of the list may step its program velocity, which the target's
-  // drive then follows: fed external set values (B8), or no controller enable (its program
-  // position follows its actual one; K26, open: docs/reliability.md).
+  // drive then follows: fed external set values (B8). (A source whose drive goes off under its
+  // moving program does not step its targets: they leave their lists and brake, K26.)
   void bound_list(std::size_t target,
                   const std::array<plc::hli::HLI_AX_COUPLING_STATE_DESC, 8>& list, double& velocity,
                   double& acceleration, bool& steps) const {
@@ -673,8 +684,7 @@ struct Program {
         velocity = acceleration = kUnbounded;
         continue;
       }
-      steps = steps || watches[s].may_step() ||
-              !plc::test_bit(axes[s]->PlcToNc.ControlDWord, plc::kControlEnable);
+      steps = steps || watches[s].may_step();
       velocity += k * watches[s].velocity_limit();
       acceleration += k * watches[s].acceleration_limit();
     }

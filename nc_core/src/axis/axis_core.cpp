@@ -65,6 +65,10 @@ void AxisCore::raise_error(ErrorCode code, bool own) noexcept {
   }
   // A coupled slave's motion is its master's: it goes on following (group reactions: SPEC C7).
   if (slave_link_.coupled) return;
+  start_error_ramp(running);
+}
+
+void AxisCore::start_error_ramp(const MasterJob& running) noexcept {
   if (!channel_.controller_enabled()) {
     job_.clear();
     return;

@@ -98,6 +98,10 @@ struct AxisCore {
   // on the emergency deceleration and jerk (SPEC A6). The first error is kept. `own`: the axis's
   // own error, which starts its group reaction (SPEC C7); false for the group's reaction itself.
   void raise_error(ErrorCode code, bool own = true) noexcept;
+  // SPEC A6: the set values ramp down from the set state they have now, on the emergency
+  // deceleration and jerk (with `running`'s larger jerk where needed, K5); without the controller
+  // enable the job just ends (the drive is off).
+  void start_error_ramp(const MasterJob& running) noexcept;
   // The new job replaces the running one: the replaced command is answered kAborted.
   void accept(JobKind kind, uint16_t number, const Profile& profile, double target,
               double target_velocity, const Limits& limits) noexcept;

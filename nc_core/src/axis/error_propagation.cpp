@@ -80,6 +80,24 @@ void GroupErrors::publish_for_slaves(AxisSnapshot& snapshot) noexcept {
   snapshot.filtered_acceleration = s_.actual_filter_.out.a;
 }
 
+void GroupErrors::leave_master_without_drive(const AxisSnapshot& master) noexcept {
+  // The master's snapshot shows the set values of the last cycle in the first cycle without its
+  // enable (its set position follows its actual one from phase (d) on): that cycle decides.
+  const bool master_moving = master.set_velocity != 0.0 || master.set_acceleration != 0.0;
+  if (master.controller_enabled || master.slaves_follow_actual || !master_moving ||
+      !s_.channel_.controller_enabled()) {
+    return;
+  }
+  s_.slave_link_.coupled = false;
+  s_.slave_link_.detached = true;
+  s_.note_event();  // CoupleState's source, the group's image
+  if (s_.channel_.has_error()) {
+    s_.start_error_ramp(s_.running_motion());  // it followed its master's error ramp so far
+  } else {
+    s_.raise_error(ErrorCode::kControllerEnableLost);
+  }
+}
+
 ErrorCode GroupErrors::push_by_hand(double velocity) noexcept {
   if (!std::isfinite(velocity)) return ErrorCode::kParameterNotFinite;
   if (s_.config_.kind != AxisKind::kContinuous) return ErrorCode::kAxisKindNotAllowed;

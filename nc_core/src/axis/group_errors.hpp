@@ -51,6 +51,13 @@ class GroupErrors : public AxisPart {
   // Kernel::push_by_hand: the drive of this disabled continuous axis moves at `velocity` (mm/s)
   // from the next cycle on, until the controller enable returns or another velocity is given.
   ErrorCode push_by_hand(double velocity) noexcept;
+  // The set values phase of a coupled slave, before its sample: its master's drive has gone off
+  // under it (K26): the master has no controller enable in this cycle and had set values
+  // in motion, and does not drive its slaves by filtered actual values (C8). The slave then leaves
+  // the coupling as a C7 DELAYED slave leaves it on its own error (SlaveLink::detached, until
+  // MC_GearOut) and stops on its own emergency ramp from its set state, with 0x4260 unless it
+  // already has an error. Without its own controller enable the slave stays (its drive is off).
+  void leave_master_without_drive(const AxisSnapshot& master) noexcept;
   // The set values phase: the snapshot's set values for the slaves, from the filtered actual
   // position of the previous cycle while the slaves follow this axis's actual values (C8).
   void publish_for_slaves(AxisSnapshot& snapshot) noexcept;

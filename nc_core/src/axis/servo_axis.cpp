@@ -96,6 +96,10 @@ class ServoPhases : public AxisPart {
   void set_values(AxisSnapshot& snapshot, std::span<const AxisSnapshot> snapshots,
                   bool shared) noexcept {
     AxisCore& a = s_;
+    // K26: a slave whose master's drive went off under it leaves and brakes on its own ramp.
+    if (!kAlone && a.slave_link_.coupled) {
+      GroupErrors(a).leave_master_without_drive(snapshots[a.slave_link_.master]);
+    }
     if (!kAlone && a.slave_link_.coupled) {
       // Seed 000 §3.2.2: slave target velocity = coupling factor × master target velocity; the
       // target position likewise (a compensation on the slave moves it on, seed 000 §3.2.4).

@@ -37,6 +37,26 @@ double HliPhase::command_position_request(
   return stage_.command_position_request(axis);
 }
 
+namespace {
+
+// K26: the axis's drive went off in this cycle under a program in motion: it has no controller
+// enable, and its snapshot still shows the last cycle's set values, which moved (from phase (d)
+// on its program position follows its actual one, at velocity 0).
+bool drive_went_off(const AxisSnapshot& s) noexcept {
+  return !s.controller_enabled && (s.set_velocity != 0.0 || s.set_acceleration != 0.0);
+}
+
+// A source of `target`'s list in force (not the target itself) whose drive went off.
+bool follows_drive_gone(const hli::HliStage& stage, std::size_t target,
+                        std::span<const AxisSnapshot> snapshots) noexcept {
+  for (std::size_t j = 0; j < snapshots.size(); ++j) {
+    if (j != target && drive_went_off(snapshots[j]) && stage.factor(target, j) != 0.0) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
 bool HliPhase::begin_cycle() noexcept {
   if (!engaged_ && handed_out_) {
     for (const plc::hli::HLI_AX* unit : stage_.gpAx()) {
@@ -66,6 +86,7 @@ plc::CoupleState HliPhase::role(std::size_t axis) const noexcept {
 void HliPhase::run(std::span<const std::unique_ptr<ServoAxis>> axes,
                    std::span<const AxisSnapshot> snapshots) noexcept {
   const std::size_t n = axes.size();
+  const bool drive_gone = std::any_of(snapshots.begin(), snapshots.end(), drive_went_off);
   for (std::size_t i = 0; i < n; ++i) {
     q_[i] = snapshots[i].set_position;
     qv_[i] = snapshots[i].set_velocity;
@@ -92,6 +113,13 @@ void HliPhase::run(std::span<const std::unique_ptr<ServoAxis>> axes,
       }
       stage_.release(i);
     } else if (stage_.coupled(i) && (axes[i]->core().channel_.has_error() || new_error)) {
+      stage_.stop(i);
+    } else if (drive_gone && stage_.coupled(i) && follows_drive_gone(stage_, i, snapshots)) {
+      // K26: a source's drive went off under its program motion, which from now on follows that
+      // drive's actual position; the target does not follow it there (a step of K × the source's
+      // velocity and following error) but leaves its list and brakes on its emergency ramp, with
+      // the coupled axis's lost enable as its error.
+      pending_[i] = plc::ErrorCode::kControllerEnableLost;
       stage_.stop(i);
     }
   }
