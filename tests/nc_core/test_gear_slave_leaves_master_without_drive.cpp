@@ -139,3 +139,26 @@ TEST_CASE(
   CHECK(b.lowest_actual >= -1e-3);
   CHECK(b.last_set == 0.0);
 }
+
+TEST_CASE(
+    "DELAYED propagation: the slave leaves with its own 0x4260, bit 6 for the delay, and "
+    "brakes without a step",
+    "[gear][enables][k26]") {
+  gr::Rig rig(2, [](std::size_t, nc::AxisConfig& c) {
+    c.error_propagation_mode = nc::ErrorPropagation::kDelayed;
+    c.error_propagation_delay = 0.05;  // 50 cycles
+  });
+  REQUIRE(rig.couple(1, 0, 2.0).state == CommandState::kReached);
+  rig.post(0, kt::move_absolute(20000.0, 300.0));
+  rig.cycles(500);
+  kt::set_enables(rig.at(0), false);
+  rig.cycles(1);
+  CHECK(rig.at(1).NcToPlc.ErrorCode == 0x4260U);
+  CHECK(kt::bit(rig.at(1), plc::kStateErrorPropagationDelayed));
+  CHECK(rig.at(1).NcToPlc.SetVelo == Approx(599.95).margin(1e-9));
+  const Brake b = watch_slave(rig, 300);
+  CHECK_FALSE(kt::bit(rig.at(1), plc::kStateErrorPropagationDelayed));  // the delay ran out
+  CHECK(b.largest_step <= 7.75);
+  CHECK(b.lowest_actual >= -1e-3);
+  CHECK(b.last_set == 0.0);
+}
