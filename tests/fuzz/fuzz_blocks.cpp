@@ -534,13 +534,16 @@ struct Program {
         watches[i].posted(*axes[i]);
       }
       // An axis whose drive goes off in this cycle while its set values move (the image still
-      // shows the last cycle's): its slaves leave their coupling (K26, docs/behaviour.md "A
-      // master whose drive goes off under its slaves").
+      // shows the last cycle's; an axis that had an HLI list may show its drive instead, while
+      // its slaves follow its program): its slaves leave their coupling (K26, docs/behaviour.md
+      // "A master whose drive goes off under its slaves").
       drive_went_off = false;
-      for (const plc::AXIS_REF* axis : axes) {
+      for (std::size_t i = 0; i < axes.size(); ++i) {
+        const plc::AXIS_REF& axis = *axes[i];
         drive_went_off =
-            drive_went_off || (!plc::test_bit(axis->PlcToNc.ControlDWord, plc::kControlEnable) &&
-                               (axis->NcToPlc.SetVelo != 0.0 || axis->NcToPlc.SetAcc != 0.0));
+            drive_went_off || (!plc::test_bit(axis.PlcToNc.ControlDWord, plc::kControlEnable) &&
+                               (axis.NcToPlc.SetVelo != 0.0 || axis.NcToPlc.SetAcc != 0.0 ||
+                                programs[i].hli_written));
       }
       kernel.cycle();
       if (region.allocations() != 0) fuzz::fail("allocation in the PLC calls or the NC cycle");
