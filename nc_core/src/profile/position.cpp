@@ -137,7 +137,9 @@ Profile finish_stop(const KinematicState& start, double target, double dir, cons
     // alternated between both ends of the bracket and stopped 2.1e-9 short of the goal).
     double lo = 0.0;
     double f_lo = s_here - goal;
-    if (jerk > 0.0 && s.a < -stop_bounds.am_limit &&
+    // (The rare test first: the piece's jerk is the problem's own decision, and as the first test
+    // its branch was mispredicted on 40 % of the switch searches by callgrind's predictor.)
+    if (s.a < -stop_bounds.am_limit && jerk > 0.0 &&
         detail::natural_velocity(s.v, s.a, jerk) > 0.0) {
       const double t_flat = (-stop_bounds.am_limit - s.a) / jerk;
       if (t_flat < push[i].t) {
