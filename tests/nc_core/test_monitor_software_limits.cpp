@@ -109,3 +109,30 @@ TEST_CASE("disabled software limits neither refuse nor raise", "[monitor][softwa
   CHECK(h.x->NcToPlc.ErrorCode == 0);
   CHECK_FALSE(kt::bit(*h.x, plc::kStateSoftLimitMaxExceeded));
 }
+
+TEST_CASE(
+    "a positioning whose reversal runs out through the maximum limit raises 0x4463 in the cycle "
+    "the set position passes it",
+    "[monitor][software_limits]") {
+  // The steady lane (nc_core/src/axis/steady_lane.hpp) takes a segment only when every position
+  // it can reach lies within the limits: here the brake segment before the reversal passes 500.
+  kt::Harness h(limited_axis(-500.0, 500.0));
+  h.post(kt::move_velocity(1000.0, 1));
+  REQUIRE(h.cycles_until([&] { return h.x->NcToPlc.SetPos >= 420.0; }) > 0);
+  REQUIRE(h.x->NcToPlc.ErrorCode == 0);
+  const uint16_t back = h.post(kt::move_absolute(0.0, 1000.0));
+  h.cycles(1);
+  REQUIRE(h.state_of(back) == CommandState::kActive);
+  int passed = -1;
+  for (int cycle = 1; cycle <= 1000 && passed < 0; ++cycle) {
+    h.cycles(1);
+    if (h.x->NcToPlc.SetPos > 500.0) {
+      passed = cycle;
+    } else {
+      REQUIRE(h.x->NcToPlc.ErrorCode == 0);
+    }
+  }
+  REQUIRE(passed > 0);
+  CHECK(h.x->NcToPlc.ErrorCode == kt::id(ErrorCode::kSoftLimitMaxDuringMotion));
+  CHECK(h.answer(back).error_code == kt::id(ErrorCode::kSoftLimitMaxDuringMotion));
+}

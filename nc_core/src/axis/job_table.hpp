@@ -101,7 +101,10 @@ class JobTable {
   void follow(const DecouplingChain& chain) noexcept;
   // Right after install(): the table's t = 0 lies `offset` s after the last sample (offset <= 0:
   // the table began between two cycles), so sample k is taken at k·T + offset.
-  void set_time_offset(double offset) noexcept { offset_ = offset; }
+  void set_time_offset(double offset) noexcept {
+    offset_ = offset;
+    steady_until_ = 0;
+  }
   // The time of the last sample on the table's clock (k·T + offset).
   double sample_time(double cycle_time) const noexcept {
     return static_cast<double>(k_) * cycle_time + offset_;
@@ -129,6 +132,8 @@ class JobTable {
   std::size_t chain_depth() const noexcept { return chain_.count; }
 
  private:
+  friend class SteadyLane;  // reads the sampling state, keeps steady_until_ (steady_lane.hpp)
+
   uint64_t k_ = 0;
   double offset_ = 0.0;  // s; see set_time_offset()
   bool ended_ = false;
@@ -136,6 +141,10 @@ class JobTable {
   // chain_ has levels (chain_.count != 0): a sample reads this, in the header's line, instead of
   // the count behind the profile (one cache line fewer per cycle).
   bool chained_ = false;
+  // The samples up to k = steady_until_ lie inside the current segment, before the end: the
+  // steady lane takes the next one while k_ < steady_until_ (0: none). Set by SteadyLane::enter(),
+  // 0 again on every change of the table (steady_lane.hpp).
+  uint32_t steady_until_ = 0;
   double jerk_ = 0.0;
   KinematicState state_{};
   Profile profile_{};        // a cycle reads its header (first) and one segment, not all of it

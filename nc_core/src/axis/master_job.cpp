@@ -170,6 +170,7 @@ void JobTable::install(const Profile& profile) noexcept {
   offset_ = 0.0;
   ended_ = false;
   reached_ = false;
+  steady_until_ = 0;
   jerk_ = 0.0;
   state_ = profile.start_state();
 }
@@ -178,6 +179,7 @@ void JobTable::clear() noexcept {
   k_ = 0;
   ended_ = false;
   reached_ = false;
+  steady_until_ = 0;
   jerk_ = 0.0;
 }
 
@@ -190,6 +192,7 @@ void JobTable::follow(const DecouplingChain& chain) noexcept {
     (void)joined.push(chain.levels[i].factor, chain.levels[i].offset);
   chain_ = joined;
   chained_ = chain_.count != 0;
+  steady_until_ = 0;
 }
 
 bool MasterJob::in_brake_phase(double cycle_time) const noexcept {

@@ -30,6 +30,14 @@ class Monitors {
   // Following error: true in the cycle the error must be raised. `armed` false (drive off, axis
   // already in error) resets the filter.
   bool following_error(double lag, bool armed) noexcept;
+  // following_error(lag, true) when it is false without counting (the filter starts again, as
+  // there); false, with nothing changed, when it would count: the steady lane (steady_lane.hpp)
+  // then runs the full monitors.
+  bool lag_within(double lag) noexcept {
+    if (fe_enabled_ && std::abs(lag) > fe_limit_) return false;
+    fe_count_ = 0;
+    return true;
+  }
 
   // Target and range windows. `settled` = the set-value generation of a positioning (or stop)
   // has ended; false resets the target-window timer.
@@ -49,6 +57,8 @@ class Monitors {
   // The same, at or beyond (a continuous start standing on the limit; p is finite).
   bool at_or_below_min(double p) const noexcept { return p <= low_; }
   bool at_or_above_max(double p) const noexcept { return p >= high_; }
+  // Every position in [lo, hi] is within the limits in force (no test of them can fire).
+  bool limits_clear(double lo, double hi) const noexcept { return low_ <= lo && hi <= high_; }
   void set_referenced(bool referenced) noexcept {
     referenced_ = referenced;
     set_bounds();

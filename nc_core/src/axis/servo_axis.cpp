@@ -16,6 +16,7 @@
 #include "axis/nc_to_plc.hpp"
 #include "axis/online_change.hpp"
 #include "axis/slave_coupling.hpp"
+#include "axis/steady_lane.hpp"
 #include "homing/axis_homing.hpp"
 
 namespace nc::detail {
@@ -77,6 +78,8 @@ class ServoPhases : public AxisPart {
   template <bool kAlone>
   void commands(CouplingPort& port) noexcept {
     AxisCore& a = s_;
+    // The steady lane's horizon holds only from one cycle_alone() to the next.
+    if constexpr (!kAlone) SteadyLane::leave(a.job_.table);
     a.error_event_ = false;
     a.drive_command_given_ = false;
     OnlineChange(a).read_override();
@@ -152,11 +155,13 @@ class ServoPhases : public AxisPart {
           !a.channel_.has_error() && plc::test_bit(a.control_seen_, plc::kControlEnable);
     }
   }
-  template <bool kAlone>
+  // `kLane`: in the steady lane (lane()), where no event has happened and the job is a
+  // positioning whose generation runs.
+  template <bool kAlone, bool kLane = false>
   void publish(uint64_t cycle_counter) noexcept {
     AxisCore& a = s_;
     plc::NCTOPLC_AXIS_REF& out = a.channel_.ref().NcToPlc;
-    if (a.events_ || a.channel_.changed()) {
+    if (!kLane && (a.events_ || a.channel_.changed())) {
       // Something the image shows may have changed since the last publish (note_event(), or the
       // channel's error, command or warnings).
       a.events_ = false;
@@ -185,11 +190,12 @@ class ServoPhases : public AxisPart {
 
     // Constant velocity: a velocity job at its level, or the cruise phase of a positioning.
     const JobKind kind = a.image_.job_kind;
+    const bool cruise = (a.set_.v != 0.0) & (std::abs(a.set_.a) <= a.image_.constant_acceleration) &
+                        (a.set_jerk_ == 0.0);
     const bool constant_velocity =
-        (kind == JobKind::kVelocity && a.job_.table.velocity_reached()) ||
-        (kind == JobKind::kPosition && !a.job_.table.generation_ended() &&
-         ((a.set_.v != 0.0) & (std::abs(a.set_.a) <= a.image_.constant_acceleration) &
-          (a.set_jerk_ == 0.0)));
+        kLane ? cruise
+              : (kind == JobKind::kVelocity && a.job_.table.velocity_reached()) ||
+                    (kind == JobKind::kPosition && !a.job_.table.generation_ended() && cruise);
 
     uint32_t word = a.image_.state_bits | a.monitors_.window_state_bits();
     set_state_bit(word, plc::kStateNotMoving, std::abs(a.drive_.velocity()) < a.standstill_window_);
@@ -204,6 +210,42 @@ class ServoPhases : public AxisPart {
     if (!image_consistent(a)) std::abort();
 #endif
   }
+  // The steady lane (steady_lane.hpp): phases (b) to (f) of a cycle in which, within the
+  // horizon, the full bodies would decide nothing but the following error's.
+  void lane(AxisSnapshot& snapshot, uint64_t cycle_counter) noexcept {
+    AxisCore& a = s_;
+#ifdef NCSDK_CHECK_EVENT_IMAGE
+    check_lane();
+#endif
+    // (b): generate_set_values() of a running positioning, its sample in the horizon's segment.
+    a.previous_set_position_ = a.set_.p;
+    a.base_ = SteadyLane::advance(a.job_.table, a.cycle_time_);
+    a.set_jerk_ = a.job_.table.jerk();
+    a.set_ = KinematicState{a.base_.p + a.stack_.held(), a.base_.v, a.base_.a};
+    drive<true>();
+    // (e): the following error; once it counts, the full monitors take this cycle on.
+    if (!a.monitors_.lag_within(a.set_.p - a.drive_.measured_position())) {
+      monitors<true, true>(snapshot, false);
+      publish<true>(cycle_counter);
+      SteadyLane::enter(a);
+      return;
+    }
+    publish<true, true>(cycle_counter);
+  }
+#ifdef NCSDK_CHECK_EVENT_IMAGE
+  // A check build: the lane's cycle is the one the full bodies would run. Its horizon is the one
+  // SteadyLane::enter() finds now (the state it was computed from has not changed), phase (a)
+  // has nothing to do, and the next sample is the table's inner path on the cursor's segment.
+  // What no horizon covers: the rare states (EventImage::rare) and the C8 filter.
+  void check_lane() const {
+    const AxisCore& a = s_;
+    if (!SteadyLane::lane_holds(a) || a.channel_.ref().Mailbox.pending() != 0 ||
+        a.stack_.held() != 0.0 || !a.stack_.empty() || a.homing_.active() ||
+        a.actual_filter_.active) {
+      std::abort();
+    }
+  }
+#endif
   // Phases (a) to (f) in ServoAxis::run_cycles_alone().
   void cycle_alone(CouplingPort& port, AxisSnapshot& snapshot,
                    std::span<const AxisSnapshot> snapshots, uint64_t cycle_counter) noexcept {
@@ -212,6 +254,15 @@ class ServoPhases : public AxisPart {
     // A check build: what the kAlone bodies take as known holds.
     if (a.slave_link_.coupled || a.slave_link_.detached || a.slave_count_ != 0) std::abort();
 #endif
+    // Within the steady lane's horizon, with the PLC's side as the last cycle saw it (nothing
+    // posted, ControlDWord and Override unchanged) and no event since: the lane.
+    const plc::PLCTONC_AXIS_REF& in = a.channel_.ref().PlcToNc;
+    if (SteadyLane::next(a.job_.table) && a.channel_.ref().Mailbox.pending() == 0 &&
+        in.ControlDWord == a.control_seen_ && in.Override == a.job_.online.override_value() &&
+        !(a.events_ | a.channel_.changed())) {
+      lane(snapshot, cycle_counter);
+      return;
+    }
     commands<true>(port);
     // Nothing happened since the last publish (its image says no rare state runs) and phase (a)
     // started nothing: the quiet bodies.
@@ -229,6 +280,7 @@ class ServoPhases : public AxisPart {
       monitors<true, true>(snapshot, false);
     }
     publish<true>(cycle_counter);
+    SteadyLane::enter(a);
   }
 };
 

@@ -18,6 +18,12 @@ class ProfileSample {
   // The segment holding t (0 < t < the end, count > 0): the last one with t0 <= t (the first when
   // none is), searched from `cursor` forwards or backwards and left there.
   static std::size_t find(const SegmentTable& segments, double t, std::size_t& cursor) noexcept;
+  // The sample at t in segment i (the one find() gives for t), its jerk into `jerk`: at()'s last
+  // step, which the steady lane (axis/steady_lane.hpp) takes alone while t stays in segment i.
+  static KinematicState in_segment(const Profile& profile, std::size_t i, double t,
+                                   double& jerk) noexcept;
+  // The segment of the last sample (Profile::cursor_).
+  static std::size_t cursor(const Profile& profile) noexcept { return profile.cursor_; }
 };
 
 inline std::size_t ProfileSample::find(const SegmentTable& segments, double t,
@@ -48,8 +54,12 @@ inline KinematicState ProfileSample::at(const Profile& profile, double t, double
     jerk = profile.jerk_at(t);  // t <= 0 or NaN: its own rules
     return profile.start_;
   }
+  return in_segment(profile, find(profile.segments_, t, profile.cursor_), t, jerk);
+}
+
+inline KinematicState ProfileSample::in_segment(const Profile& profile, std::size_t i, double t,
+                                                double& jerk) noexcept {
   const SegmentTable& segments = profile.segments_;
-  const std::size_t i = find(segments, t, profile.cursor_);
   const Segment& seg = segments.items[i];
   jerk = seg.j;
   const double tau = t - seg.t0;
