@@ -7,9 +7,7 @@
 // -1437.8 mm/s as its set position jumped back by twice the master's following error).
 #include <catch2/catch.hpp>
 
-#include <algorithm>
-#include <cmath>
-
+#include "brake_watch.hpp"
 #include "gear_rig.hpp"
 
 namespace {
@@ -33,31 +31,9 @@ gr::Rig cruising_pair(bool lag) {
   return rig;
 }
 
-// What the slave did after its master's enable went, over `cycles` cycles: the largest
-// per-cycle change of its set velocity, its lowest set and actual velocity, and its last set
-// velocity.
-struct Brake {
-  double largest_step = 0.0;
-  double lowest_set = 1e300;
-  double lowest_actual = 1e300;
-  double last_set = 0.0;
-  int cycles_to_rest = -1;
-};
-
-Brake watch_slave(gr::Rig& rig, int cycles) {
-  Brake b;
-  double previous = rig.at(1).NcToPlc.SetVelo;
-  for (int k = 1; k <= cycles; ++k) {
-    rig.cycles(1);
-    const double v = rig.at(1).NcToPlc.SetVelo;
-    b.largest_step = std::max(b.largest_step, std::abs(v - previous));
-    b.lowest_set = std::min(b.lowest_set, v);
-    b.lowest_actual = std::min(b.lowest_actual, rig.at(1).NcToPlc.ActVelo);
-    if (b.cycles_to_rest < 0 && v == 0.0) b.cycles_to_rest = k;
-    previous = v;
-  }
-  b.last_set = previous;
-  return b;
+// The slave (axis 1) over `cycles` cycles after its master's enable went.
+kt::BrakeWatch watch_slave(gr::Rig& rig, int cycles) {
+  return kt::watch_brake(rig.at(1), cycles, [&rig] { rig.cycles(1); });
 }
 
 }  // namespace
@@ -73,7 +49,7 @@ TEST_CASE("a slave behind an ideal drive whose enable goes brakes on its own eme
   // 10000 mm/s², jerk 1e5 mm/s³), one cycle in: 600 - 1e5 * 0.001² / 2 = 599.95 mm/s.
   CHECK(rig.at(1).NcToPlc.SetVelo == Approx(599.95).margin(1e-9));
   CHECK(rig.at(1).NcToPlc.GearRatio == 0.0);
-  const Brake b = watch_slave(rig, 300);
+  const kt::BrakeWatch b = watch_slave(rig, 300);
   // No step: from 600 mm/s the ramp's deceleration peaks at sqrt(600 * 1e5) = 7746 mm/s² (below
   // 10000), so at most 7.75 mm/s per cycle; down to rest without reversing.
   CHECK(b.largest_step <= 7.75);
@@ -94,7 +70,7 @@ TEST_CASE(
   // The master's actual position trails its set position: what the slave would have jumped by.
   REQUIRE(rig.at(0).NcToPlc.PosDiff > 0.9);
   kt::set_enables(rig.at(0), false);
-  const Brake b = watch_slave(rig, 300);
+  const kt::BrakeWatch b = watch_slave(rig, 300);
   CHECK(rig.at(1).NcToPlc.ErrorCode == 0x4260U);
   CHECK(b.largest_step <= 7.75);
   CHECK(b.lowest_actual >= -1e-3);  // before: -1437.8 mm/s
@@ -133,7 +109,7 @@ TEST_CASE(
   REQUIRE(following == Approx(2.0 * rig.at(0).NcToPlc.SetVelo));
   REQUIRE(following > 100.0);
   kt::set_enables(rig.at(0), false);
-  const Brake b = watch_slave(rig, 300);
+  const kt::BrakeWatch b = watch_slave(rig, 300);
   CHECK(rig.at(1).NcToPlc.ErrorCode == 0x4358U);  // the first error stays
   CHECK(b.largest_step <= 20.0);
   CHECK(b.lowest_actual >= -1e-3);
@@ -156,7 +132,7 @@ TEST_CASE(
   CHECK(rig.at(1).NcToPlc.ErrorCode == 0x4260U);
   CHECK(kt::bit(rig.at(1), plc::kStateErrorPropagationDelayed));
   CHECK(rig.at(1).NcToPlc.SetVelo == Approx(599.95).margin(1e-9));
-  const Brake b = watch_slave(rig, 300);
+  const kt::BrakeWatch b = watch_slave(rig, 300);
   CHECK_FALSE(kt::bit(rig.at(1), plc::kStateErrorPropagationDelayed));  // the delay ran out
   CHECK(b.largest_step <= 7.75);
   CHECK(b.lowest_actual >= -1e-3);

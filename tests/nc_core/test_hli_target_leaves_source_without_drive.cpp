@@ -6,9 +6,7 @@
 // lagging one it jumped back by the source's following error).
 #include <catch2/catch.hpp>
 
-#include <algorithm>
-#include <cmath>
-
+#include "brake_watch.hpp"
 #include "hli_kernel_rig.hpp"
 
 using namespace hlik;
@@ -32,27 +30,9 @@ Rig cruising(bool lag) {
   return rig;
 }
 
-struct Brake {
-  double largest_step = 0.0;
-  double lowest_velocity = 1e300;
-  double last_velocity = 0.0;
-  int ticks_to_rest = -1;
-};
-
-// Y2's drive velocity over `n` ticks after X's enable went.
-Brake watch_target(Rig& rig, int n) {
-  Brake b;
-  double last = rig.axes[1]->NcToPlc.SetVelo;
-  for (int k = 1; k <= n; ++k) {
-    rig.tick();
-    const double v = rig.axes[1]->NcToPlc.SetVelo;
-    b.largest_step = std::max(b.largest_step, std::abs(v - last));
-    b.lowest_velocity = std::min(b.lowest_velocity, rig.axes[1]->NcToPlc.ActVelo);
-    if (b.ticks_to_rest < 0 && v == 0.0) b.ticks_to_rest = k;
-    last = v;
-  }
-  b.last_velocity = last;
-  return b;
+// Y2's drive (axis 1) over `n` ticks after X's enable went.
+kt::BrakeWatch watch_target(Rig& rig, int n) {
+  return kt::watch_brake(*rig.axes[1], n, [&rig] { rig.tick(); });
 }
 
 }  // namespace
@@ -62,15 +42,15 @@ TEST_CASE("an HLI target whose source's drive goes off brakes on its emergency r
   Rig rig = cruising(false);
   const double a = rig.kernel.config("Y2").emergency_deceleration;  // 10000 mm/s²
   rig.power[0].Enable = false;
-  const Brake b = watch_target(rig, 300);
+  const kt::BrakeWatch b = watch_target(rig, 300);
   CHECK(rig.error(1) == 0x4260U);
   CHECK_FALSE(rig.kernel.gpAx()[1]->lr_mc_control.axis_coupling.state_r.active_r);
   // The stage's brake: a constant deceleration, a * T = 10 mm/s per cycle, from 1000 mm/s to
   // rest in 100 cycles, and no reversal.
   CHECK(b.largest_step <= a * 0.001 + 1e-9);
-  CHECK(b.ticks_to_rest == 100);
-  CHECK(b.lowest_velocity >= -1e-3);
-  CHECK(b.last_velocity == 0.0);
+  CHECK(b.cycles_to_rest == 100);
+  CHECK(b.lowest_actual >= -1e-3);
+  CHECK(b.last_set == 0.0);
 }
 
 TEST_CASE("an HLI target behind a lagging source drive that goes off does not jump back",
@@ -78,11 +58,11 @@ TEST_CASE("an HLI target behind a lagging source drive that goes off does not ju
   Rig rig = cruising(true);
   REQUIRE(rig.axes[0]->NcToPlc.PosDiff > 1.0);  // what the target would have jumped back by
   rig.power[0].Enable = false;
-  const Brake b = watch_target(rig, 300);
+  const kt::BrakeWatch b = watch_target(rig, 300);
   CHECK(rig.error(1) == 0x4260U);
   CHECK(b.largest_step <= 10.0 + 1e-9);
-  CHECK(b.lowest_velocity >= -1e-3);
-  CHECK(b.last_velocity == 0.0);
+  CHECK(b.lowest_actual >= -1e-3);
+  CHECK(b.last_set == 0.0);
 }
 
 TEST_CASE("an HLI target keeps its list when a source at rest loses its enable",
