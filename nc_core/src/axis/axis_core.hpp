@@ -124,8 +124,8 @@ struct AxisCore {
   // What a steady cycle touches comes first, close together (docs/performance.md "Kernel cycle",
   // "Third pass"): the hot members, then the parts of which it reads only the flag they keep
   // first; the stack and the channel each from a cache line of their own; the job with its
-  // profile's header first; the configuration last. prefetch_cycle_data (servo_axis.hpp) names
-  // these lines: keep the two in step.
+  // profile's header first; the configuration last. prefetch_axis_lines and prefetch_cycle_data
+  // (servo_axis.hpp) name these lines: keep them in step.
   // Kind kTwoSpeed: the phases run this instead of the servo path (AxisKind dispatch).
   std::unique_ptr<TwoSpeedAxis> two_speed_;
   double cycle_time_;

@@ -46,6 +46,9 @@ class Drive {
   double measured_position() const noexcept { return measured_; }
   double velocity() const noexcept { return velocity_; }
   double acceleration() const noexcept { return acceleration_; }
+  // The dead-time line's slot the next step() reads and writes (the line's end without a dead
+  // time): the kernel's loop asks for its cache line ahead (servo_axis.hpp).
+  const double* next_slot() const noexcept { return delay_line_.data() + delay_head_; }
 
  private:
   double quantise(double p) const noexcept;

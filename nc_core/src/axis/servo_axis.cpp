@@ -313,8 +313,10 @@ void ServoAxis::phase_commands(CouplingPort& port) noexcept {
 
 namespace {
 
-// How many axes ahead the steady loop asks for an axis's data (docs/performance.md).
-constexpr std::size_t kPrefetchAhead = 2;
+// How many axes ahead the steady loop asks for an axis's lines at fixed places, and for those
+// they point to (docs/performance.md "Tenth pass").
+constexpr std::size_t kLinesAhead = 4;
+constexpr std::size_t kDataAhead = 2;
 
 }  // namespace
 
@@ -333,10 +335,9 @@ constexpr std::size_t kPrefetchAhead = 2;
   const std::size_t n = axes.size();
   const std::span<const AxisSnapshot> all(snapshot, n);
   for (std::size_t i = 0; i < n; ++i) {
-    // The data of the axis after the next one is on its way while this one runs.
-    if (i + kPrefetchAhead < n) {
-      prefetch_cycle_data(*axis[i + kPrefetchAhead], snapshot[i + kPrefetchAhead]);
-    }
+    // The data of the next axes is on its way while this one runs.
+    if (i + kLinesAhead < n) prefetch_axis_lines(*axis[i + kLinesAhead]);
+    if (i + kDataAhead < n) prefetch_cycle_data(*axis[i + kDataAhead], snapshot[i + kDataAhead]);
     ServoAxis& s = *axis[i];
     if (s.two_speed_) {
       s.phase_commands(port);

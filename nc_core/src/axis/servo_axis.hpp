@@ -15,6 +15,7 @@
 #include <span>
 
 #include "axis/axis_core.hpp"
+#include "axis/steady_lane.hpp"
 #include "nc_core/axis_snapshot.hpp"
 #include "nc_core/coupling_graph.hpp"
 #include "plc_interface/axis_ref.hpp"
@@ -92,22 +93,36 @@ class ServoAxis : private AxisCore {
     __builtin_prefetch(p + k);
 }
 
-// Asks for the lines a steady cycle of `axis` reads (axis_core.hpp) and its snapshot's group
-// reaction, so that the kernel fetches the next axes' data while it runs this one: the hot
-// members up to the C7 delay's flag, the stack's first line, the channel's first four, the job's
-// first five (its kind and override, the table and the profile's header and first segments)
-// (what a quiet cycle reads, docs/performance.md "Seventh pass", "Eighth pass"; not the homing,
-// the C8 filter or the slave link, which only a cycle in a rare state reads).
-[[gnu::always_inline]] inline void prefetch_cycle_data(const ServoAxis& axis,
-                                                       const AxisSnapshot& snapshot) noexcept {
+// The kernel's loop asks for an axis's lines in two steps (docs/performance.md "Tenth pass"):
+// first those at fixed places, then, some axes later, those the first ones point to.
+//
+// The lines at fixed places that a cycle in the steady lane reads (axis_core.hpp): the hot
+// members up to the C7 delay's flag, the stack's first line, the channel's first four (PlcToNc,
+// NcToPlc and the mailbox's count) and the job's first two (its kind and override, the table
+// with its horizon, the profile's header with its cursor).
+[[gnu::always_inline]] inline void prefetch_axis_lines(const ServoAxis& axis) noexcept {
   const AxisCore& a = axis.core();
   const auto hot = static_cast<std::size_t>(reinterpret_cast<const char*>(&a.propagation_) -
                                             reinterpret_cast<const char*>(&a));
   prefetch_lines(&a, hot + 1);
   prefetch_lines(&a.stack_, 1);
   prefetch_lines(&a.channel_, 256);
-  prefetch_lines(&a.job_, 320);
-  prefetch_lines(&snapshot.group_reaction_due, 1);  // the steady cycle writes only this
+  prefetch_lines(&a.job_, 128);
+}
+
+// The lines prefetch_axis_lines() points to, read from them: the segment of the profile's cursor
+// (the lane's sample) and the drive's dead-time slot; and, for an axis whose next cycle is not
+// the lane's (no horizon), what the full bodies read beyond it: the job's next three lines (the
+// first segments) and the snapshot's group reaction, which the lane does not write.
+[[gnu::always_inline]] inline void prefetch_cycle_data(const ServoAxis& axis,
+                                                       const AxisSnapshot& snapshot) noexcept {
+  const AxisCore& a = axis.core();
+  SteadyLane::prefetch(a.job_.table);
+  __builtin_prefetch(a.drive_.next_slot());
+  if (!SteadyLane::next(a.job_.table)) {
+    prefetch_lines(reinterpret_cast<const char*>(&a.job_) + 128, 192);
+    __builtin_prefetch(&snapshot.group_reaction_due);
+  }
 }
 
 }  // namespace nc::detail

@@ -57,6 +57,11 @@ class SteadyLane {
     table.jerk_ = jerk;
     return table.state_;
   }
+  // Asks for the cache lines of the table's next sample as the lane takes it (the cursor's
+  // segment, ProfileSample::prefetch_segment): the kernel's loop, ahead (servo_axis.hpp).
+  [[gnu::always_inline]] static void prefetch(const JobTable& table) noexcept {
+    ProfileSample::prefetch_segment(table.profile_, ProfileSample::cursor(table.profile_));
+  }
   // No horizon (the kernel's other paths, which enter() does not follow).
   static void leave(JobTable& table) noexcept { table.steady_until_ = 0; }
 };
