@@ -76,6 +76,16 @@ bool draw_piece(const Draw& d, profile_problems::Rng& rng, Piece& piece) {
   return true;
 }
 
+// for_each_draw() over the draws that have a Piece (draw_piece(), from the same generator).
+template <class Visit>
+void for_each_piece(std::uint64_t seed, Visit&& visit) {
+  for_each_draw(seed,
+                [&](const Draw& d, const nc::detail::StopBounds& b, profile_problems::Rng& rng) {
+                  Piece piece;
+                  if (draw_piece(d, rng, piece)) visit(d, b, piece);
+                });
+}
+
 // The switch tests' tally of the points a closed form gives for a piece's root: missed (none in
 // the piece), found, and off (neither within 1e-9 of the piece's time of the root, nor, where S
 // barely moves over the piece and the time is only known to S's rounding, a point whose S is the
@@ -205,10 +215,8 @@ TEST_CASE("stop_point_along: on the rise-hold-ramp stop S is the quartic of its 
 TEST_CASE("switch_on_rise: the switch on a hold or a rise where the stop is a rise and the ramp",
           "[profile][stop_point]") {
   SwitchTally tally;
-  for_each_draw(
-      0x5EED5Eull, [&](const Draw& d, const nc::detail::StopBounds& b, profile_problems::Rng& rng) {
-        Piece piece;
-        if (!draw_piece(d, rng, piece)) return;
+  for_each_piece(
+      0x5EED5Eull, [&](const Draw& d, const nc::detail::StopBounds& b, const Piece& piece) {
         const double g = piece.g, t_piece = piece.length, tau = piece.tau;
         // S (relative to the piece's start) where the stop is a rise and the ramp, going forwards.
         auto stop_point = [&](double t, double& out) {
@@ -232,10 +240,8 @@ TEST_CASE("switch_from the piece's start: the switch where the start and the roo
           "[profile][stop_point]") {
   SwitchTally tally;
   long beyond = 0, beyond_taken = 0;
-  for_each_draw(0x57A27ull, [&](const Draw& d, const nc::detail::StopBounds& b,
-                                profile_problems::Rng& rng) {
-    Piece piece;
-    if (!draw_piece(d, rng, piece)) return;
+  for_each_piece(0x57A27ull, [&](const Draw& d, const nc::detail::StopBounds& b,
+                                 const Piece& piece) {
     const double g = piece.g, t_piece = piece.length, tau = piece.tau;
     // S (relative to the piece's start), and whether the stop there is a rise and the ramp
     // going forwards.
